@@ -1,0 +1,25 @@
+// Types of the embind module built from wasm/src/bindings/bindings.cpp (copied next to the generated
+// build/wasm/cscd.js by scripts/build-wasm.sh). Failing calls return the error message as a string.
+export interface SurfaceHandle {
+  error(): string;
+  facts(): unknown;
+  distanceFromVertex(vertex: number): Float64Array | string;
+  exactDistanceFromVertex(vertex: number): Float64Array | string;
+  distanceFromPoints(faces: Uint32Array, barycentric: Float64Array): Float64Array | string;
+  delete(): void;
+}
+
+export interface CscdModule {
+  inspect(positions: Float64Array | Float32Array, triangles: Uint32Array): unknown;
+  Surface: new (positions: Float64Array | Float32Array, triangles: Uint32Array) => SurfaceHandle;
+}
+
+export interface CscdModuleOptions {
+  wasmBinary?: ArrayBuffer | Uint8Array;
+  locateFile?: (path: string, prefix: string) => string;
+  print?: (text: string) => void;
+  printErr?: (text: string) => void;
+  onAbort?: (what: unknown) => void;
+}
+
+export default function createCscdModule(options?: CscdModuleOptions): Promise<CscdModule>;

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "mesh/geodesics.h"
+#include "mesh/mesh_check.h"
+
+#include "geometrycentral/surface/signpost_intrinsic_triangulation.h"
+#include "geometrycentral/surface/manifold_surface_mesh.h"
+#include "geometrycentral/surface/vertex_position_geometry.h"
+
+#include <memory>
+
+namespace cscd {
+
+// Everything CSCD-M keeps per input mesh: the halfedge mesh, its intrinsic Delaunay triangulation and
+// the prefactored geodesic solver. Built once, then queried for many sources.
+class Surface {
+public:
+  // Throws InputError naming the first problem when the mesh is not a manifold surface.
+  explicit Surface(const MeshArrays& arrays);
+
+  const MeshFacts& facts() const { return check.facts; }
+  size_t vertexCount() const { return check.facts.vertices; }
+  size_t faceCount() const { return check.facts.faces; }
+
+  geometrycentral::surface::ManifoldSurfaceMesh& mesh() { return *inputMesh; }
+  geometrycentral::surface::VertexPositionGeometry& geometry() { return *inputGeometry; }
+  geometrycentral::surface::IntrinsicTriangulation& intrinsic() { return *intrinsicTriangulation; }
+  Geodesics& geodesics() { return *geodesicSolver; }
+
+private:
+  MeshCheck check;
+  std::unique_ptr<geometrycentral::surface::ManifoldSurfaceMesh> inputMesh;
+  std::unique_ptr<geometrycentral::surface::VertexPositionGeometry> inputGeometry;
+  std::unique_ptr<geometrycentral::surface::SignpostIntrinsicTriangulation> intrinsicTriangulation;
+  std::unique_ptr<Geodesics> geodesicSolver;
+};
+
+} // namespace cscd

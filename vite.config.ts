@@ -1,4 +1,4 @@
-import { defineConfig } from 'vite';
+import { defineConfig } from 'vitest/config';
 
 // The app lives in web/, static assets (sample meshes) in public/; the WASM core is built into
 // build/wasm/ by scripts/build-wasm.sh and imported from there.

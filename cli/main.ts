@@ -1,0 +1,128 @@
+/**
+ * The `cscd` command line: `cscd <command> [options]`. To add a command, write it in cli/commands/
+ * and list it in COMMANDS.
+ */
+import { readFileSync } from 'node:fs';
+import { parseArgs, type ParseArgsConfig } from 'node:util';
+import { CoreError } from '../lib/core/types.ts';
+import { MESH_EXTENSIONS, MeshFormatError } from '../lib/io/index.ts';
+import { UsageError, type Command } from './command.ts';
+import { distance } from './commands/distance.ts';
+import { info } from './commands/info.ts';
+
+const COMMANDS: Command[] = [info, distance];
+
+async function main(argv: string[]): Promise<void> {
+  const [first, ...rest] = argv;
+  if (first === undefined || first === '--help' || first === '-h') return print(overview());
+  if (first === '--version' || first === '-V') return print(version());
+  if (first === 'help') return print(rest.length > 0 ? commandHelp(findCommand(rest[0])) : overview());
+  const command = findCommand(first);
+
+  const options: NonNullable<ParseArgsConfig['options']> = { help: { type: 'boolean', short: 'h' } };
+  for (const [name, spec] of Object.entries(command.options)) {
+    options[name] = spec.short ? { type: spec.type, short: spec.short } : { type: spec.type };
+  }
+  let parsed;
+  try {
+    parsed = parseArgs({ args: rest, options, allowPositionals: true, strict: true });
+  } catch (error) {
+    // parseArgs explains unknown options and missing values well; they are usage errors.
+    const code = (error as NodeJS.ErrnoException).code;
+    throw code?.startsWith('ERR_PARSE_ARGS') ? new UsageError(`${command.name}: ${(error as Error).message}`) : error;
+  }
+  const { values, positionals } = parsed;
+  if (values.help) return print(commandHelp(command));
+  if (positionals.length !== command.args.length) {
+    throw new UsageError(`${command.name}: expected ${command.args.join(' ')}, got ${positionals.length} argument${positionals.length === 1 ? '' : 's'} (usage: ${usage(command)})`);
+  }
+  for (const [name, spec] of Object.entries(command.options)) {
+    if (spec.required && values[name] === undefined) throw new UsageError(`${command.name}: --${name} is required (usage: ${usage(command)})`);
+  }
+  await command.run(positionals, values);
+}
+
+function findCommand(name: string): Command {
+  const command = COMMANDS.find((c) => c.name === name);
+  if (!command) throw new UsageError(`unknown command '${name}' (see cscd --help)`);
+  return command;
+}
+
+function print(text: string): void {
+  process.stdout.write(`${text}\n`);
+}
+
+function version(): string {
+  const packageJson = JSON.parse(readFileSync(new URL('../package.json', import.meta.url), 'utf8')) as { version: string };
+  return packageJson.version;
+}
+
+function optionSyntax(name: string, spec: Command['options'][string]): string {
+  const flag = spec.short ? `-${spec.short}, --${name}` : `--${name}`;
+  return spec.type === 'string' ? `${flag} ${spec.value ?? 'VALUE'}` : flag;
+}
+
+function usage(command: Command): string {
+  const options = Object.entries(command.options).map(([name, spec]) => {
+    const syntax = optionSyntax(name, { ...spec, short: undefined });
+    return spec.required ? syntax : `[${syntax}]`;
+  });
+  return ['cscd', command.name, ...command.args, ...options].join(' ');
+}
+
+/** Two aligned columns. */
+function table(rows: [string, string][]): string {
+  const width = Math.max(...rows.map(([left]) => left.length)) + 3;
+  return rows.map(([left, right]) => `  ${left.padEnd(width)}${right}`).join('\n');
+}
+
+function overview(): string {
+  return [
+    `cscd ${version()}: curve skeletons of triangle meshes (CSCD)`,
+    '',
+    'Usage: cscd <command> [options]',
+    '',
+    'Commands:',
+    table([
+      ...COMMANDS.map((c): [string, string] => [usage(c).slice('cscd '.length), c.summary]),
+      ['help <command>', 'show the options of a command'],
+    ]),
+    '',
+    'Options:',
+    table([
+      ['-h, --help', 'show this help (after a command: its help)'],
+      ['-V, --version', 'print the version'],
+    ]),
+    '',
+    `Meshes: ${MESH_EXTENSIONS.join(' ')} (the format is checked against the content).`,
+    'Errors: one line "cscd: <message>" on stderr; exit code 2 for usage errors, 1 otherwise.',
+  ].join('\n');
+}
+
+function commandHelp(command: Command): string {
+  const rows = Object.entries(command.options).map(([name, spec]): [string, string] => [optionSyntax(name, spec), spec.description]);
+  rows.push(['-h, --help', 'show this help']);
+  return [`Usage: ${usage(command)}`, '', command.summary, ...(command.details ? [command.details] : []), '', 'Options:', table(rows)].join('\n');
+}
+
+/**
+ * One line on stderr, never a stack trace. Our own errors are meant for users as they are; others
+ * (a RangeError, a WASM RuntimeError...) keep their name as a hint of what went wrong.
+ */
+function report(error: unknown): void {
+  const ours = error instanceof MeshFormatError || error instanceof CoreError || error instanceof UsageError;
+  const message = !(error instanceof Error) ? String(error)
+    : ours || error.constructor === Error ? error.message
+    : `${error.name}: ${error.message}`;
+  process.stderr.write(`cscd: ${message.split('\n')[0]}\n`);
+  process.exitCode = error instanceof UsageError ? 2 : 1;
+}
+
+// `cscd distance ... | head` closes stdout early, which is not an error worth a stack trace.
+process.stdout.on('error', (error: NodeJS.ErrnoException) => {
+  if (error.code === 'EPIPE') process.exit(0);
+  report(error);
+});
+
+// exitCode rather than process.exit(): a large JSON on stdout must be flushed before Node exits.
+await main(process.argv.slice(2)).catch(report);

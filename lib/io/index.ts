@@ -1,0 +1,86 @@
+/**
+ * Mesh file reading shared by the CLI (Node) and the page's worker (browser): plain bytes in,
+ * typed arrays out, no Node APIs.
+ */
+import { FORMAT_LABEL } from './mesh-builder.ts';
+import { parseObj } from './obj.ts';
+import { parseOff } from './off.ts';
+import { parsePly } from './ply.ts';
+import { latin1 } from './scan.ts';
+import { isBinaryStl, parseStl, startsWithSolid } from './stl.ts';
+import { MeshFormatError, type MeshFormat, type ParsedMesh } from './types.ts';
+
+export * from './types.ts';
+
+/** File name extensions of the supported formats, e.g. for a file picker's `accept`. */
+export const MESH_EXTENSIONS: readonly string[] = ['.obj', '.ply', '.stl', '.off'];
+
+const PARSERS: Record<MeshFormat, (bytes: Uint8Array) => ParsedMesh> = {
+  obj: parseObj,
+  ply: parsePly,
+  stl: parseStl,
+  off: parseOff,
+};
+
+/** The format a file name's extension stands for (case-insensitive), or null. */
+export function formatFromName(name: string): MeshFormat | null {
+  const ext = /\.([^./\\]+)$/.exec(name)?.[1].toLowerCase();
+  return ext && ext in PARSERS ? (ext as MeshFormat) : null;
+}
+
+/**
+ * Parses a mesh file. The extension chooses the format unless the content clearly belongs to
+ * another one (then that one is read, with a warning); throws MeshFormatError with a one-line
+ * message starting with the format name.
+ */
+export function parseMesh(bytes: Uint8Array, fileName: string): ParsedMesh {
+  const named = formatFromName(fileName);
+  if (bytes.length === 0) throw new MeshFormatError(`${named ? FORMAT_LABEL[named] : fileName}: file is empty`);
+  const sniffed = sniffFormat(bytes);
+  let format: MeshFormat;
+  let warning: string | null = null;
+  if (named && (sniffed === named || sniffed === null)) {
+    if (sniffed === null && (named === 'obj' || named === 'off') && looksBinary(bytes)) {
+      throw new MeshFormatError(`${FORMAT_LABEL[named]}: the file is binary, not a text ${FORMAT_LABEL[named]} file`);
+    }
+    format = named;
+  } else if (sniffed) {
+    format = sniffed;
+    warning = named
+      ? `the file is named like ${FORMAT_LABEL[named]} but contains ${FORMAT_LABEL[sniffed]}; read it as ${FORMAT_LABEL[sniffed]}`
+      : `unknown file extension; read the file as ${FORMAT_LABEL[sniffed]}, which its content looks like`;
+  } else {
+    throw new MeshFormatError(
+      `unknown mesh format: '${fileName}' has no ${MESH_EXTENSIONS.join(', ')} extension and its content is not recognised`,
+    );
+  }
+  const mesh = PARSERS[format](bytes);
+  if (warning) mesh.warnings.unshift(warning);
+  return mesh;
+}
+
+const OFF_HEADER = /^(ST)?C?N?4?n?OFF(\s|$)/;
+const OBJ_STATEMENT = /^(v|vt|vn|f|o|g|s|l|usemtl|mtllib)\s/m;
+const SNIFF_BYTES = 4096;
+
+/** The format the content itself shows (magic line, keyword or exact binary STL size), or null. */
+function sniffFormat(bytes: Uint8Array): MeshFormat | null {
+  const head = latin1(bytes, 0, Math.min(bytes.length, SNIFF_BYTES));
+  if (/^ply\r?\n/.test(head)) return 'ply';
+  if (OFF_HEADER.test(head.replace(/^(\s*#[^\n]*\n)*\s*/, ''))) return 'off';
+  if (isBinaryStl(bytes) || startsWithSolid(bytes)) return 'stl';
+  if (!looksBinary(bytes) && OBJ_STATEMENT.test(head)) return 'obj';
+  return null;
+}
+
+/** Text mesh files have no NUL bytes and hardly any other control characters. */
+function looksBinary(bytes: Uint8Array): boolean {
+  const n = Math.min(bytes.length, SNIFF_BYTES);
+  let control = 0;
+  for (let i = 0; i < n; i++) {
+    const b = bytes[i];
+    if (b === 0) return true;
+    if (b < 0x20 && b !== 0x09 && b !== 0x0a && b !== 0x0d && b !== 0x0c && b !== 0x0b && b !== 0x1b) control++;
+  }
+  return control > n / 100;
+}

@@ -1,0 +1,89 @@
+/**
+ * Wavefront OBJ: `v x y z [w] [r g b]` and `f` with `i`, `i/t`, `i//n`, `i/t/n` and negative
+ * (relative) indices. Polygons are fan-triangulated; every other statement (vt, vn, g, o, s, l, p,
+ * usemtl, mtllib...) is ignored.
+ */
+import { MeshBuilder } from './mesh-builder.ts';
+import { TextScanner, clip, isBlank } from './scan.ts';
+import type { ParsedMesh } from './types.ts';
+
+const LF = 0x0a;
+const HASH = 0x23;
+const SLASH = 0x2f;
+const MINUS = 0x2d;
+const PLUS = 0x2b;
+const ZERO = 0x30;
+const NINE = 0x39;
+const LOWER_V = 0x76;
+const LOWER_F = 0x66;
+
+export function parseObj(bytes: Uint8Array): ParsedMesh {
+  const s = new TextScanner(bytes, 'OBJ', true);
+  // A typical OBJ line is 20-40 bytes: start near the final size instead of regrowing many times.
+  const builder = new MeshBuilder('obj', bytes.length / 64, bytes.length / 64);
+  const poly: number[] = [];
+  // Positive indices may refer to vertices defined later in the file, so their range is checked
+  // at the end; the line of the largest one is kept for the message.
+  let maxIndex = -1;
+  let maxIndexLine = 0;
+
+  while (!s.atEnd()) {
+    s.skipBlanks();
+    const b = s.pos < bytes.length ? bytes[s.pos] : LF;
+    const next = s.pos + 1 < bytes.length ? bytes[s.pos + 1] : LF;
+    // Only the one-letter statements `v` and `f` matter (not vt, vn, vp, fo...).
+    const oneLetter = isBlank(next) || next === LF;
+    if (oneLetter && b === LOWER_V) {
+      s.pos++;
+      builder.addVertex(s.readNumber(), s.readNumber(), s.readNumber());
+    } else if (oneLetter && b === LOWER_F) {
+      s.pos++;
+      poly.length = 0;
+      const vertexCount = builder.vertexCount;
+      while (!s.atLineEnd()) {
+        const index = readIndex(s);
+        if (index === 0) s.fail('vertex index 0 is invalid (OBJ indices start at 1)');
+        if (index < 0) {
+          if (vertexCount + index < 0) s.fail(`relative vertex index ${index} points before the first vertex`);
+          poly.push(vertexCount + index);
+        } else {
+          if (index > maxIndex) {
+            maxIndex = index;
+            maxIndexLine = s.line;
+          }
+          poly.push(index - 1);
+        }
+      }
+      if (poly.length < 3) s.fail(`face has ${poly.length} vertices, at least 3 are needed`);
+      builder.addPolygon(poly, poly.length);
+    }
+    s.skipLine();
+  }
+
+  if (maxIndex > builder.vertexCount) {
+    s.line = maxIndexLine;
+    s.fail(`vertex index ${maxIndex} is out of range (the file has ${builder.vertexCount} vertices)`);
+  }
+  return builder.finish();
+}
+
+/** Reads the vertex part of `i`, `i/t`, `i//n` or `i/t/n` and skips the rest of the token. */
+function readIndex(s: TextScanner): number {
+  const { bytes } = s;
+  const len = bytes.length;
+  let p = s.pos;
+  let negative = false;
+  if (bytes[p] === MINUS || bytes[p] === PLUS) negative = bytes[p++] === MINUS;
+  const digitsStart = p;
+  let value = 0;
+  let b = 0;
+  while (p < len && (b = bytes[p]) >= ZERO && b <= NINE) {
+    value = value * 10 + (b - ZERO);
+    p++;
+  }
+  const endsWell = p >= len || bytes[p] === SLASH || bytes[p] === LF || bytes[p] === HASH || isBlank(bytes[p]);
+  if (p === digitsStart || !endsWell || value > 0xffffffff) s.fail(`bad vertex index '${clip(s.peekToken())}'`);
+  s.pos = p;
+  s.skipToken();
+  return negative ? -value : value;
+}

@@ -1,0 +1,134 @@
+/** The side panel: file, status, error box, mesh facts, notes, distance legend, timings, display options. */
+import type { MeshFacts } from '../../../lib/core/types.ts';
+import { colormapGradient } from '../viewer/colormap.ts';
+
+function $<T extends HTMLElement = HTMLElement>(selector: string): T {
+  const element = document.querySelector<T>(selector);
+  if (!element) throw new Error(`missing element ${selector}`);
+  return element;
+}
+const byTestId = (id: string) => $(`[data-testid="${id}"]`);
+
+/** A length with four significant digits. */
+export function formatLength(x: number): string {
+  if (!Number.isFinite(x)) return String(x);
+  if (x === 0) return '0';
+  const a = Math.abs(x);
+  return a >= 1e-3 && a < 1e6 ? String(Number(x.toPrecision(4))) : x.toExponential(3);
+}
+
+export function formatMs(ms: number): string {
+  return ms < 10 ? `${ms.toFixed(1)} ms` : ms < 10_000 ? `${Math.round(ms)} ms` : `${(ms / 1000).toFixed(1)} s`;
+}
+
+export class Panel {
+  private readonly statusText = $('#status-text');
+  private readonly status = byTestId('status');
+  private readonly error = byTestId('error');
+
+  constructor() {
+    $('#colorbar').style.background = colormapGradient();
+  }
+
+  setFile(name: string, format: string): void {
+    const el = byTestId('file-name');
+    el.textContent = name;
+    el.title = name;
+    const badge = byTestId('file-format');
+    badge.textContent = format.toUpperCase();
+    badge.hidden = false;
+    document.title = `${name} · CSCD Studio`;
+  }
+
+  setStatus(text: string, busy = false): void {
+    this.statusText.textContent = text;
+    this.status.classList.toggle('busy', busy);
+  }
+
+  showError(title: string, message: string): void {
+    const strong = document.createElement('strong');
+    strong.textContent = title;
+    const body = document.createElement('span');
+    body.textContent = message;
+    this.error.replaceChildren(strong, body);
+    this.error.hidden = false;
+  }
+
+  clearError(): void {
+    this.error.hidden = true;
+    this.error.replaceChildren();
+  }
+
+  setFacts(f: MeshFacts): void {
+    const set = (id: string, text: string | number, warn = false) => {
+      const el = byTestId(id);
+      el.textContent = String(text);
+      el.classList.toggle('warn', warn);
+    };
+    set('facts-vertices', f.vertices);
+    set('facts-faces', f.faces);
+    set('facts-edges', f.edges);
+    set('facts-components', f.components);
+    set('facts-boundary-loops', f.boundaryLoops);
+    set('facts-genus', f.genus ?? '–');
+    set('facts-euler', f.eulerCharacteristic);
+    const nonManifold = [
+      f.nonManifoldEdges ? `${f.nonManifoldEdges} edges` : '',
+      f.nonManifoldVertices ? `${f.nonManifoldVertices} verts` : '',
+    ].filter(Boolean);
+    set('facts-manifold', f.manifold ? 'yes' : `no${nonManifold.length ? ` (${nonManifold.join(', ')})` : ''}`, !f.manifold);
+    set('facts-oriented', f.consistentlyOriented ? 'yes' : 'no', !f.consistentlyOriented);
+    set('facts-bbox-diagonal', formatLength(f.bboxDiagonal));
+    set('facts-mean-edge', formatLength(f.meanEdgeLength));
+  }
+
+  /** Parser warnings plus the page's own notes about the mesh. */
+  setNotes(notes: string[]): void {
+    const list = byTestId('warnings');
+    list.replaceChildren(
+      ...notes.map((note) => {
+        const li = document.createElement('li');
+        li.textContent = note;
+        return li;
+      }),
+    );
+    byTestId('warnings-section').hidden = notes.length === 0;
+  }
+
+  setTimings(t: { parseMs?: number; inspectMs?: number; prepareMs?: number; distanceMs?: number | null }): void {
+    const set = (id: string, ms: number | null | undefined) => {
+      if (ms !== undefined) byTestId(id).textContent = ms === null ? '–' : formatMs(ms);
+    };
+    set('timing-parse', t.parseMs);
+    set('timing-inspect', t.inspectMs);
+    set('timing-prepare', t.prepareMs);
+    set('timing-distance', t.distanceMs);
+  }
+
+  setDistance(d: { source: number; max: number; spacing: number } | null): void {
+    byTestId('distance').hidden = !d;
+    byTestId('distance-empty').hidden = !!d;
+    if (!d) return;
+    byTestId('distance-source').textContent = String(d.source);
+    byTestId('distance-max').textContent = formatLength(d.max);
+    byTestId('distance-spacing').textContent = d.spacing > 0 ? formatLength(d.spacing) : '–';
+    byTestId('colorbar-max').textContent = formatLength(d.max);
+  }
+
+  /** Checkbox list of the viewer's layers. */
+  setLayers(layers: Array<{ name: string; label: string; visible: boolean }>, onToggle: (name: string, visible: boolean) => void): void {
+    $('#layers').replaceChildren(
+      ...layers.map(({ name, label, visible }) => {
+        const row = document.createElement('label');
+        row.className = 'check';
+        const box = document.createElement('input');
+        box.type = 'checkbox';
+        box.checked = visible;
+        box.dataset.layer = name;
+        box.addEventListener('change', () => onToggle(name, box.checked));
+        row.append(box, ` ${label}`);
+        return row;
+      }),
+    );
+  }
+}

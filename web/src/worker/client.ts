@@ -1,0 +1,146 @@
+/**
+ * Page-side handle on the geometry worker: typed requests returning promises, and crash recovery.
+ *
+ * When the worker dies or reports a crash (WASM abort), every pending request is rejected with a
+ * WorkerError of kind `crash`, the worker is replaced and the last successfully opened mesh is re-opened in
+ * the new one from bytes kept here. Requests made meanwhile queue behind that re-open.
+ */
+import {
+  type ErrorKind,
+  type OpenedReply,
+  type ProgressEvent,
+  type ReplyFor,
+  type WorkerMessage,
+  type WorkerRequest,
+} from './protocol.ts';
+
+/** An error reported by the worker for one request; `kind` says whether the worker survived it. */
+export class WorkerError extends Error {
+  override name = 'WorkerError';
+  constructor(
+    readonly kind: ErrorKind,
+    message: string,
+  ) {
+    super(message);
+  }
+}
+
+export interface ClientHooks {
+  /** Progress of any request. */
+  onProgress?(event: ProgressEvent): void;
+  /** The worker died: `message` says why; `restored` settles when the new worker has the mesh again. */
+  onCrash?(message: string, restored: Promise<OpenedReply | null>): void;
+}
+
+interface Pending {
+  resolve(reply: never): void;
+  reject(error: Error): void;
+}
+
+/** A request without its id (distributed over the union, so each variant keeps its own fields). */
+type WithoutId<R> = R extends unknown ? Omit<R, 'id'> : never;
+type RequestBody = WithoutId<WorkerRequest>;
+
+/** Give up restarting after this many crashes in a row without a successful reply in between. */
+const MAX_CONSECUTIVE_CRASHES = 3;
+
+export class GeometryClient {
+  private worker: Worker;
+  private nextId = 1;
+  private readonly pending = new Map<number, Pending>();
+  /** The last mesh the worker opened successfully, to re-open after a crash. */
+  private current: { fileName: string; bytes: ArrayBuffer } | null = null;
+  private crashes = 0;
+  private dead = false;
+
+  constructor(private readonly hooks: ClientHooks = {}) {
+    this.worker = this.spawn();
+  }
+
+  /** Opens a mesh file in the worker. `bytes` is transferred (detached) after a copy is kept. */
+  async open(fileName: string, bytes: ArrayBuffer): Promise<OpenedReply> {
+    const kept = bytes.slice(0);
+    const reply = await this.request({ type: 'open', fileName, bytes, withArrays: true }, [bytes]);
+    this.current = { fileName, bytes: kept };
+    return reply;
+  }
+
+  distance(source: number): Promise<ReplyFor['distance']> {
+    return this.request({ type: 'distance', source });
+  }
+
+  /** Test hook: the worker fails as if the WASM core had aborted, or dies of an uncaught error. */
+  simulateCrash(how: 'abort' | 'uncaught' = 'abort'): Promise<never> {
+    return this.request({ type: 'crash', how });
+  }
+
+  dispose(): void {
+    this.dead = true;
+    this.worker.terminate();
+    this.rejectAll('The geometry worker was stopped.');
+  }
+
+  private request<B extends RequestBody>(body: B, transfer: Transferable[] = []): Promise<ReplyFor[B['type']]> {
+    if (this.dead) return Promise.reject(new WorkerError('crash', 'The geometry worker is not running.'));
+    const id = this.nextId++;
+    return new Promise<ReplyFor[B['type']]>((resolve, reject) => {
+      this.pending.set(id, { resolve: resolve as (reply: never) => void, reject });
+      this.worker.postMessage({ ...body, id }, transfer);
+    });
+  }
+
+  private spawn(): Worker {
+    const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'cscd-geometry' });
+    worker.onmessage = (event: MessageEvent<WorkerMessage>) => this.receive(event.data);
+    worker.onerror = (event: ErrorEvent) => {
+      event.preventDefault();
+      this.crash(`The geometry worker failed: ${event.message || 'it could not start or threw an uncaught error'}`);
+    };
+    worker.onmessageerror = () => this.crash('The geometry worker sent a message that could not be read.');
+    return worker;
+  }
+
+  private receive(message: WorkerMessage): void {
+    if (message.type === 'progress') {
+      this.hooks.onProgress?.(message);
+      return;
+    }
+    const pending = this.pending.get(message.id);
+    if (!pending) return;
+    this.pending.delete(message.id);
+    if (message.type === 'error') {
+      pending.reject(new WorkerError(message.kind, message.message));
+      if (message.kind === 'crash') this.crash(message.message);
+    } else {
+      this.crashes = 0;
+      pending.resolve(message as never);
+    }
+  }
+
+  private rejectAll(message: string): void {
+    const pending = [...this.pending.values()];
+    this.pending.clear();
+    for (const p of pending) p.reject(new WorkerError('crash', message));
+  }
+
+  private crash(message: string): void {
+    if (this.dead) return;
+    this.worker.terminate();
+    this.rejectAll(message);
+    this.crashes++;
+    if (this.crashes > MAX_CONSECUTIVE_CRASHES) {
+      this.dead = true;
+      const final = `${message} The geometry worker keeps failing; reload the page.`;
+      this.hooks.onCrash?.(final, Promise.resolve(null));
+      return;
+    }
+    this.worker = this.spawn();
+    let restored: Promise<OpenedReply | null> = Promise.resolve(null);
+    if (this.current) {
+      const { fileName, bytes } = this.current;
+      const copy = bytes.slice(0);
+      restored = this.request({ type: 'open', fileName, bytes: copy, withArrays: false }, [copy]);
+    }
+    this.hooks.onCrash?.(message, restored);
+  }
+}

@@ -1,0 +1,120 @@
+/**
+ * Messages between the page and the geometry worker.
+ *
+ * Every request carries an `id`; the worker answers it with exactly one reply of the matching type
+ * or an `error` with the same id, and may send `progress` events for it before that. Large arrays
+ * travel in transfer lists in both directions (see `transferables`).
+ */
+import type { MeshFacts } from '../../../lib/core/types.ts';
+import type { MeshFormat } from '../../../lib/io/types.ts';
+
+// ---------------------------------------------------------------------------------------------
+// Page -> worker
+
+export interface OpenRequest {
+  type: 'open';
+  id: number;
+  fileName: string;
+  /** The file's bytes; transferred, so the sender's buffer is detached afterwards. */
+  bytes: ArrayBuffer;
+  /** Send positions and triangles back (false when re-opening a mesh the page already shows). */
+  withArrays: boolean;
+}
+
+export interface DistanceRequest {
+  type: 'distance';
+  id: number;
+  /** Source vertex index. */
+  source: number;
+}
+
+/**
+ * Test hook: `abort` fails the request as a WASM abort would (an error reply of kind `crash`);
+ * `uncaught` throws outside any request, which the page sees as the Worker's `error` event.
+ */
+export interface CrashRequest {
+  type: 'crash';
+  id: number;
+  how: 'abort' | 'uncaught';
+}
+
+export type WorkerRequest = OpenRequest | DistanceRequest | CrashRequest;
+
+// ---------------------------------------------------------------------------------------------
+// Worker -> page
+
+export interface OpenTimings {
+  parseMs: number;
+  inspectMs: number;
+  prepareMs: number;
+}
+
+export interface OpenedReply {
+  type: 'opened';
+  id: number;
+  fileName: string;
+  format: MeshFormat;
+  /** xyz per vertex (float32 for the GPU); empty when the request had `withArrays: false`. */
+  positions: Float32Array;
+  triangles: Uint32Array;
+  facts: MeshFacts;
+  warnings: string[];
+  /** Why geodesic computations are unavailable on this mesh (e.g. non-manifold), or null. */
+  surfaceError: string | null;
+  timings: OpenTimings;
+}
+
+export interface DistanceReply {
+  type: 'distance';
+  id: number;
+  source: number;
+  /** Geodesic distance per vertex; non-finite values (unreachable vertices) are kept as is. */
+  distance: Float32Array;
+  /** Largest finite distance. */
+  max: number;
+  timings: { distanceMs: number };
+}
+
+/**
+ * `format`: the file is not a readable mesh; `core`: the core refused the input or computation;
+ * both leave the worker usable. `crash`: the WASM core aborted or the worker hit an unexpected
+ * error; its state is lost and the page must replace it.
+ */
+export type ErrorKind = 'format' | 'core' | 'crash';
+
+export interface ErrorReply {
+  type: 'error';
+  id: number;
+  kind: ErrorKind;
+  message: string;
+}
+
+export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'distance';
+
+/** Intermediate news about a request; `fraction` in [0, 1] when the stage can measure itself. */
+export interface ProgressEvent {
+  type: 'progress';
+  id: number;
+  stage: ProgressStage;
+  message: string;
+  fraction?: number;
+}
+
+export type WorkerReply = OpenedReply | DistanceReply | ErrorReply;
+export type WorkerMessage = WorkerReply | ProgressEvent;
+
+/** The reply type that answers each request type. */
+export interface ReplyFor {
+  open: OpenedReply;
+  distance: DistanceReply;
+  crash: never;
+}
+
+/** Distinct array buffers of the given typed arrays, for a postMessage transfer list. */
+export function transferables(...arrays: ArrayBufferView[]): ArrayBuffer[] {
+  const buffers = new Set<ArrayBuffer>();
+  for (const a of arrays) {
+    if (a.buffer instanceof ArrayBuffer && a.buffer.byteLength > 0) buffers.add(a.buffer);
+  }
+  return [...buffers];
+}

@@ -1,9 +1,19 @@
 // The CSCD core for TypeScript callers (CLI, worker, tests): a thin layer over the embind module that
 // turns its error strings into CoreError and frees WASM objects through dispose().
 import createCscdModule, { type CscdModule, type SurfaceHandle } from '../../build/wasm/cscd.js';
-import { CoreError, type Core, type MeshArrays, type MeshFacts, type Surface, type SurfacePoint } from './types.ts';
+import {
+  CoreError,
+  type Core,
+  type MeshArrays,
+  type MeshFacts,
+  type Options,
+  type Separator,
+  type Surface,
+  type SurfacePoint,
+} from './types.ts';
 
 export * from './types.ts';
+export { defaultOptions } from './options.ts';
 
 function unwrap<T>(result: T | string): T {
   if (typeof result === 'string') throw new CoreError(result);
@@ -25,6 +35,10 @@ class WasmSurface implements Surface {
 
   exactDistanceFromVertex(vertex: number): Float64Array {
     return unwrap(this.live().exactDistanceFromVertex(vertex));
+  }
+
+  separator(source: number, options: Partial<Options> = {}): Separator {
+    return unwrap(this.live().separator(source, options)) as Separator;
   }
 
   distanceFromPoints(points: SurfacePoint[]): Float64Array {

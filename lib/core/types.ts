@@ -38,6 +38,76 @@ export interface MeshFacts {
   meanEdgeLength: number;
 }
 
+/**
+ * Every option of the CSCD pipeline, with the same names in C++ (wasm/src/cscd/options.h), the
+ * bindings, worker messages, UI labels and CLI flags. Defaults: `defaultOptions` in lib/core/options.ts.
+ */
+export interface Options {
+  /** How the target cut-locus point is chosen: nearest to the source in space or along the surface. */
+  target: 'euclid' | 'geodesic';
+  /** Keep the shortened loop inside a sphere around the source (paper Sec. 4.1.6). */
+  sphere: boolean;
+  /** Fixes every random choice (source sampling). */
+  seed: number;
+  /** Cut locus: minimum turn of the distance gradient at a ridge, radians in [0, pi]. */
+  angleThreshold: number;
+  /** Cut locus: minimum ridge sharpness, -(mean edge length) x (Laplacian of the distance), scale-free. */
+  laplacianThreshold: number;
+  /** Cut locus: leaf branches with fewer edges than this are pruned. */
+  pruneDepth: number;
+}
+
+/** Why stage 1 produced no separator for a source ('ok' when it did). */
+export type SeparatorStatus = 'ok' | 'no-cut-locus' | 'no-target' | 'trace-failed' | 'degenerate-loop' | 'shorten-failed';
+
+/** Points as xyz triples, one after the other. */
+export type Polyline = Float64Array;
+
+/** Stage 1 of CSCD-M for one source, with every intermediate result (paper Sec. 4.1, Alg. 2). */
+export interface Separator {
+  source: number;
+  status: SeparatorStatus;
+  /** What went wrong, for the user; empty when status is 'ok'. */
+  message: string;
+  /** Geodesic distance from the source, per vertex. */
+  distance: Float64Array;
+  cutLocus: {
+    /** Graph nodes as vertex indices, their positions (xyz) and edges (pairs of node indices). */
+    vertices: Uint32Array;
+    points: Float64Array;
+    edges: Uint32Array;
+    /** Per-vertex fields the detector used (radians; scale-free Laplacian). */
+    angleDeviation: Float64Array;
+    laplacian: Float64Array;
+    /** The vertex farthest from the source, where the cut locus is grown from. */
+    root: number;
+    cycleRank: number;
+  };
+  /** Target cut-locus vertex and its position, or null when none was found. */
+  target: number | null;
+  /** Targets tried: the nearest first, farther ones when a loop enclosed nothing. */
+  attempts: number;
+  targetPoint: [number, number, number] | null;
+  /** The two steepest-descent paths from the target, as polylines on the surface. */
+  paths: [Polyline, Polyline];
+  /** Their concatenation: a closed loop (last point joins the first). */
+  approxLoop: Polyline;
+  /** The loop after edge-flip shortening: closed, on the surface. */
+  loop: Polyline;
+  /** The locality constraint (null when switched off). */
+  sphere: { center: [number, number, number]; radius: number } | null;
+  approxLength: number;
+  length: number;
+  /** Surface areas of the two sides of the loop inside the constraint region, A1 <= A2. */
+  areas: [number, number];
+  /** A1 / (A2 * length) (paper Sec. 4.2.1). */
+  score: number;
+  /** Whether the loop's centroid lies inside the shape (winding number > 1/2). */
+  centroidInside: boolean;
+  /** Milliseconds per stage. */
+  timings: Record<string, number>;
+}
+
 /** Per-mesh state kept in the core: prefactored geodesic solver on the intrinsic Delaunay triangulation. */
 export interface Surface {
   readonly facts: MeshFacts;
@@ -47,6 +117,8 @@ export interface Surface {
   exactDistanceFromVertex(vertex: number): Float64Array;
   /** Geodesic distance from the nearest of a set of surface points to every vertex. */
   distanceFromPoints(points: SurfacePoint[]): Float64Array;
+  /** Stage 1 for one source vertex; per-mesh data is reused, so repeated calls are cheap. */
+  separator(source: number, options?: Partial<Options>): Separator;
   /** Frees the WASM-side object; the Surface must not be used afterwards. */
   dispose(): void;
 }

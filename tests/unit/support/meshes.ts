@@ -66,3 +66,72 @@ function normalize(p: number[]): number[] {
   const n = Math.hypot(p[0], p[1], p[2]);
   return p.map((x) => x / n);
 }
+
+/** A deterministic pseudo-random generator (mulberry32), so test meshes are the same on every run. */
+export function random(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+/**
+ * The same surface, badly triangulated: a share of the faces gets a new vertex just inside one edge
+ * and is split into three, one of them a sliver. Old vertex indices are kept.
+ */
+export function withSlivers(mesh: MeshArrays, share: number, seed: number): MeshArrays {
+  const next = random(seed);
+  const positions = Array.from(mesh.positions);
+  const triangles: number[] = [];
+  for (let f = 0; f < mesh.triangles.length / 3; f++) {
+    const corners = [0, 1, 2].map((k) => mesh.triangles[3 * f + k]);
+    if (next() >= share) {
+      triangles.push(...corners);
+      continue;
+    }
+    const e = Math.floor(next() * 3);
+    const [a, b, c] = [corners[e], corners[(e + 1) % 3], corners[(e + 2) % 3]];
+    const t = 0.2 + 0.6 * next();
+    const p = [0, 1, 2].map((k) => {
+      const onEdge = positions[3 * a + k] + t * (positions[3 * b + k] - positions[3 * a + k]);
+      return onEdge + 0.01 * (positions[3 * c + k] - onEdge);
+    });
+    const id = positions.length / 3;
+    positions.push(...p);
+    triangles.push(a, b, id, b, c, id, c, a, id);
+  }
+  return { positions: Float64Array.from(positions), triangles: Uint32Array.from(triangles) };
+}
+
+/** Squared distance from point p to triangle abc (Ericson, Real-Time Collision Detection, 5.1.5). */
+export function pointTriangleDistance2(p: number[], a: number[], b: number[], c: number[]): number {
+  const sub = (u: number[], v: number[]) => [u[0] - v[0], u[1] - v[1], u[2] - v[2]];
+  const dot = (u: number[], v: number[]) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  const at = (s: number, t: number) => a.map((x, k) => x + s * (b[k] - x) + t * (c[k] - x));
+  const ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+  const d1 = dot(ab, ap), d2 = dot(ac, ap);
+  let q: number[];
+  if (d1 <= 0 && d2 <= 0) q = a;
+  else {
+    const bp = sub(p, b), d3 = dot(ab, bp), d4 = dot(ac, bp);
+    const cp = sub(p, c), d5 = dot(ab, cp), d6 = dot(ac, cp);
+    const vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+    if (d3 >= 0 && d4 <= d3) q = b;
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0) q = at(d1 / (d1 - d3), 0);
+    else if (d6 >= 0 && d5 <= d6) q = c;
+    else if (vb <= 0 && d2 >= 0 && d6 <= 0) q = at(0, d2 / (d2 - d6));
+    else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) {
+      const w = (d4 - d3) / (d4 - d3 + (d5 - d6));
+      q = b.map((x, k) => x + w * (c[k] - x));
+    } else {
+      const denom = 1 / (va + vb + vc);
+      q = at(vb * denom, vc * denom);
+    }
+  }
+  const d = sub(p, q);
+  return dot(d, d);
+}

@@ -1,6 +1,7 @@
 // embind surface of the core. Arrays cross as typed arrays (one copy in, one copy out: JS owns every
 // result, so heap growth cannot invalidate it). Nothing here throws into JS: a call that fails returns
 // the error message as a string, which lib/core turns into a CoreError.
+#include "mesh/separator.h"
 #include "mesh/surface.h"
 
 #include <emscripten/bind.h>
@@ -28,6 +29,24 @@ val toFloat64Array(const std::vector<double>& values) {
   return val::global("Float64Array").new_(typed_memory_view(values.size(), values.data()));
 }
 
+template <class T>
+val toTypedArray(const char* type, const std::vector<T>& values) {
+  return val::global(type).new_(typed_memory_view(values.size(), values.data()));
+}
+
+val toFloat64Array(const std::vector<geometrycentral::Vector3>& points) {
+  std::vector<double> flat;
+  flat.reserve(3 * points.size());
+  for (const auto& p : points) flat.insert(flat.end(), {p.x, p.y, p.z});
+  return toFloat64Array(flat);
+}
+
+val toArray3(const geometrycentral::Vector3& v) {
+  val a = val::array();
+  for (double x : {v.x, v.y, v.z}) a.call<void>("push", x);
+  return a;
+}
+
 val toArray3(const std::array<double, 3>& v) {
   val a = val::array();
   for (double x : v) a.call<void>("push", x);
@@ -53,6 +72,87 @@ val toVal(const MeshFacts& f) {
   o.set("bboxMax", toArray3(f.bboxMax));
   o.set("bboxDiagonal", f.bboxDiagonal);
   o.set("meanEdgeLength", f.meanEdgeLength);
+  return o;
+}
+
+Options toOptions(const val& given) {
+  Options options;
+  if (given.isUndefined() || given.isNull()) return options;
+  auto number = [&](const char* name, double low, double high, double fallback) {
+    val v = given[name];
+    if (v.isUndefined()) return fallback;
+    double x = v.as<double>();
+    if (!(x >= low && x <= high)) {
+      std::ostringstream msg;
+      msg << "option " << name << " must be between " << low << " and " << high << ", got " << x;
+      throw InputError(msg.str());
+    }
+    return x;
+  };
+  if (!given["target"].isUndefined()) {
+    std::string target = given["target"].as<std::string>();
+    if (target != "euclid" && target != "geodesic")
+      throw InputError("option target must be 'euclid' or 'geodesic', got '" + target + "'");
+    options.target = target == "euclid" ? TargetMode::Euclidean : TargetMode::Geodesic;
+  }
+  if (!given["sphere"].isUndefined()) options.sphere = given["sphere"].as<bool>();
+  options.seed = uint32_t(number("seed", 0, 4294967295.0, options.seed));
+  options.angleThreshold = number("angleThreshold", 0, M_PI, options.angleThreshold);
+  options.laplacianThreshold = number("laplacianThreshold", 0, 1e6, options.laplacianThreshold);
+  options.pruneDepth = int(number("pruneDepth", 0, 1000, options.pruneDepth));
+  return options;
+}
+
+val toVal(const SeparatorResult& r, Surface& surface) {
+  val o = val::object();
+  o.set("source", r.source);
+  o.set("status", r.status);
+  o.set("message", r.message);
+  o.set("distance", toFloat64Array(r.distance));
+
+  const CutLocus& c = r.cutLocus;
+  std::vector<uint32_t> vertices(c.vertices.begin(), c.vertices.end()), edges;
+  std::vector<geometrycentral::Vector3> points;
+  for (size_t v : c.vertices) points.push_back(surface.geometry().vertexPositions[v]);
+  for (const auto& e : c.edges) edges.insert(edges.end(), {uint32_t(e[0]), uint32_t(e[1])});
+  val cutLocus = val::object();
+  cutLocus.set("vertices", toTypedArray("Uint32Array", vertices));
+  cutLocus.set("points", toFloat64Array(points));
+  cutLocus.set("edges", toTypedArray("Uint32Array", edges));
+  cutLocus.set("angleDeviation", toFloat64Array(c.angleDeviation));
+  cutLocus.set("laplacian", toFloat64Array(c.laplacian));
+  cutLocus.set("root", c.root);
+  cutLocus.set("cycleRank", c.vertices.empty() ? 0 : c.cycleRank());
+  o.set("cutLocus", cutLocus);
+
+  o.set("target", r.target ? val(*r.target) : val::null());
+  o.set("attempts", r.attempts);
+  o.set("targetPoint", r.target ? toArray3(surface.geometry().vertexPositions[*r.target]) : val::null());
+  val paths = val::array();
+  paths.call<void>("push", toFloat64Array(r.firstPath));
+  paths.call<void>("push", toFloat64Array(r.secondPath));
+  o.set("paths", paths);
+  o.set("approxLoop", toFloat64Array(r.approxLoop));
+  o.set("loop", toFloat64Array(r.loop));
+  if (r.sphere) {
+    val sphere = val::object();
+    sphere.set("center", toArray3(r.sphere->center));
+    sphere.set("radius", r.sphere->radius);
+    o.set("sphere", sphere);
+  } else {
+    o.set("sphere", val::null());
+  }
+  o.set("approxLength", r.approxLength);
+  o.set("length", r.length);
+  val areas = val::array();
+  areas.call<void>("push", r.areas[0]);
+  areas.call<void>("push", r.areas[1]);
+  o.set("areas", areas);
+  o.set("score", r.score);
+  o.set("centroidInside", r.centroidInside);
+  val timings = val::object();
+  for (const auto& [stage, ms] : r.timings) timings.set(stage, ms);
+  o.set("timings", timings);
   return o;
 }
 
@@ -97,6 +197,10 @@ public:
     return reportingErrors([&] {
       return toFloat64Array(surface->geodesics().exactFromVertex(checkedVertex(vertex)));
     });
+  }
+
+  val separator(double source, const val& options) {
+    return reportingErrors([&] { return toVal(computeSeparator(*surface, checkedVertex(source), toOptions(options)), *surface); });
   }
 
   // faces: one input face index per point; barycentric: three coordinates per point.
@@ -147,5 +251,6 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("facts", &SurfaceBinding::facts)
       .function("distanceFromVertex", &SurfaceBinding::distanceFromVertex)
       .function("exactDistanceFromVertex", &SurfaceBinding::exactDistanceFromVertex)
+      .function("separator", &SurfaceBinding::separator)
       .function("distanceFromPoints", &SurfaceBinding::distanceFromPoints);
 }

@@ -5,6 +5,7 @@ export interface SurfaceHandle {
   facts(): unknown;
   distanceFromVertex(vertex: number): Float64Array | string;
   exactDistanceFromVertex(vertex: number): Float64Array | string;
+  separator(source: number, options: object): object | string;
   distanceFromPoints(faces: Uint32Array, barycentric: Float64Array): Float64Array | string;
   delete(): void;
 }

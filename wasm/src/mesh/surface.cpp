@@ -28,4 +28,9 @@ Surface::Surface(const MeshArrays& arrays) : check(checkMesh(arrays)) {
   geodesicSolver = std::make_unique<Geodesics>(*intrinsicTriangulation, check.vertexComponent);
 }
 
+const CutLocusSolver& Surface::cutLocusSolver() {
+  if (!cutLocus) cutLocus = std::make_unique<CutLocusSolver>(*intrinsicTriangulation);
+  return *cutLocus;
+}
+
 } // namespace cscd

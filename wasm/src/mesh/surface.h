@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mesh/cut_locus.h"
 #include "mesh/geodesics.h"
 #include "mesh/mesh_check.h"
 
@@ -24,8 +25,10 @@ public:
 
   geometrycentral::surface::ManifoldSurfaceMesh& mesh() { return *inputMesh; }
   geometrycentral::surface::VertexPositionGeometry& geometry() { return *inputGeometry; }
-  geometrycentral::surface::IntrinsicTriangulation& intrinsic() { return *intrinsicTriangulation; }
+  geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic() { return *intrinsicTriangulation; }
   Geodesics& geodesics() { return *geodesicSolver; }
+  // Per-mesh data of the cut-locus detector, built on first use (not every caller needs it).
+  const CutLocusSolver& cutLocusSolver();
 
 private:
   MeshCheck check;
@@ -33,6 +36,7 @@ private:
   std::unique_ptr<geometrycentral::surface::VertexPositionGeometry> inputGeometry;
   std::unique_ptr<geometrycentral::surface::SignpostIntrinsicTriangulation> intrinsicTriangulation;
   std::unique_ptr<Geodesics> geodesicSolver;
+  std::unique_ptr<CutLocusSolver> cutLocus;
 };
 
 } // namespace cscd

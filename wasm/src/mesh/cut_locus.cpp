@@ -1,0 +1,454 @@
+#include "mesh/cut_locus.h"
+
+#include "mesh/mesh_arrays.h"
+#include "mesh/union_find.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <stdexcept>
+#include <string>
+
+using namespace geometrycentral;
+using namespace geometrycentral::surface;
+
+namespace cscd {
+
+namespace {
+
+constexpr size_t NONE = std::numeric_limits<size_t>::max();
+
+using Vec2 = std::array<double, 2>;
+
+Vec2 rotate(const Vec2& v, const Vec2& unitComplex) {
+  return {v[0] * unitComplex[0] - v[1] * unitComplex[1], v[0] * unitComplex[1] + v[1] * unitComplex[0]};
+}
+
+Vec2 toVec2(const Vector2& v) { return {v.x, v.y}; }
+
+} // namespace
+
+size_t CutLocus::components() const {
+  UnionFind sets(vertices.size());
+  for (const auto& e : edges) sets.unite(e[0], e[1]);
+  size_t count = 0;
+  for (size_t i = 0; i < vertices.size(); i++)
+    if (sets.find(i) == i) count++;
+  return count;
+}
+
+CutLocusSolver::CutLocusSolver(IntrinsicTriangulation& intrinsic) {
+  ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
+  nVertices = mesh.nVertices();
+
+  // The graph is reported on input vertex indices: only valid while no vertex was inserted.
+  if (nVertices != intrinsic.inputMesh.nVertices())
+    throw std::logic_error("cut locus: the intrinsic triangulation has inserted vertices");
+  for (Vertex v : mesh.vertices()) {
+    const SurfacePoint& at = intrinsic.vertexLocations[v];
+    if (at.type != SurfacePointType::Vertex || at.vertex.getIndex() != v.getIndex())
+      throw std::logic_error("cut locus: intrinsic vertex " + std::to_string(v.getIndex()) + " is not input vertex " +
+                             std::to_string(v.getIndex()));
+  }
+
+  intrinsic.requireEdgeLengths();
+  intrinsic.requireFaceAreas();
+  intrinsic.requireVertexDualAreas();
+  intrinsic.requireEdgeCotanWeights();
+  intrinsic.requireHalfedgeVectorsInFace();
+  intrinsic.requireHalfedgeVectorsInVertex();
+  intrinsic.requireTransportVectorsAlongHalfedge();
+
+  VertexData<size_t> vIndex = mesh.getVertexIndices();
+  FaceData<size_t> fIndex = mesh.getFaceIndices();
+  EdgeData<size_t> eIndex = mesh.getEdgeIndices();
+
+  faceVertices.resize(mesh.nFaces());
+  faceHatGradients.resize(mesh.nFaces());
+  faceEdges.resize(mesh.nFaces());
+  for (Face f : mesh.faces()) {
+    size_t i = fIndex[f];
+    Halfedge ab = f.halfedge(), bc = ab.next(), ca = bc.next();
+    faceVertices[i] = {vIndex[ab.vertex()], vIndex[bc.vertex()], vIndex[ca.vertex()]};
+    faceEdges[i] = {eIndex[ab.edge()], eIndex[bc.edge()], eIndex[ca.edge()]};
+    // The hat function of a corner rises towards it from the opposite edge: its gradient is that edge
+    // rotated a quarter turn inwards (faces are CCW), over twice the area.
+    double twiceArea = 2 * intrinsic.faceAreas[f];
+    const Halfedge opposite[3] = {bc, ca, ab};
+    for (int k = 0; k < 3; k++) {
+      Vector2 e = intrinsic.halfedgeVectorsInFace[opposite[k]];
+      faceHatGradients[i][k] = twiceArea > 0 ? Vec2{-e.y / twiceArea, e.x / twiceArea} : Vec2{0, 0};
+    }
+  }
+
+  edgeVertices.resize(mesh.nEdges());
+  edgeFaces.resize(mesh.nEdges());
+  double lengthSum = 0;
+  for (Edge e : mesh.edges()) {
+    size_t i = eIndex[e];
+    edgeVertices[i] = {vIndex[e.firstVertex()], vIndex[e.secondVertex()]};
+    Halfedge he = e.halfedge();
+    edgeFaces[i] = {he.isInterior() ? fIndex[he.face()] : NONE,
+                    he.twin().isInterior() ? fIndex[he.twin().face()] : NONE};
+    lengthSum += intrinsic.edgeLengths[e];
+  }
+  meanEdge = mesh.nEdges() > 0 ? lengthSum / mesh.nEdges() : 1;
+
+  rowStart.assign(nVertices + 1, 0);
+  cornerStart.assign(nVertices + 1, 0);
+  vertexArea.resize(nVertices);
+  for (Vertex v : mesh.vertices()) {
+    size_t i = vIndex[v];
+    vertexArea[i] = intrinsic.vertexDualAreas[v];
+    for (Halfedge he : v.outgoingHalfedges()) {
+      neighbours.push_back({vIndex[he.tipVertex()], eIndex[he.edge()], intrinsic.edgeCotanWeights[he.edge()],
+                            toVec2(intrinsic.transportVectorsAlongHalfedge[he.twin()])});
+      if (!he.isInterior()) continue;
+      // The outgoing halfedge is known in both frames, which fixes the face -> vertex rotation.
+      Vector2 rotation = unit(intrinsic.halfedgeVectorsInVertex[he] / intrinsic.halfedgeVectorsInFace[he]);
+      corners.push_back({fIndex[he.face()], intrinsic.faceAreas[he.face()], toVec2(rotation)});
+    }
+    rowStart[i + 1] = neighbours.size();
+    cornerStart[i + 1] = corners.size();
+  }
+
+  // Connected components and their genus, for the homology step.
+  UnionFind sets(nVertices);
+  for (const auto& e : edgeVertices) sets.unite(e[0], e[1]);
+  vertexComponent.assign(nVertices, -1);
+  int nComponents = 0;
+  for (size_t v = 0; v < nVertices; v++)
+    if (sets.find(v) == v) vertexComponent[v] = nComponents++;
+  for (size_t v = 0; v < nVertices; v++) vertexComponent[v] = vertexComponent[sets.find(v)];
+  std::vector<long> chi(nComponents, 0);
+  std::vector<bool> hasBoundary(nComponents, false);
+  for (size_t v = 0; v < nVertices; v++) chi[vertexComponent[v]]++;
+  for (size_t e = 0; e < edgeVertices.size(); e++) {
+    int c = vertexComponent[edgeVertices[e][0]];
+    chi[c]--;
+    if (edgeFaces[e][0] == NONE || edgeFaces[e][1] == NONE) hasBoundary[c] = true;
+  }
+  for (const auto& f : faceVertices) chi[vertexComponent[f[0]]]++;
+  componentGenus.resize(nComponents);
+  for (int c = 0; c < nComponents; c++) componentGenus[c] = hasBoundary[c] ? -1 : (2 - chi[c]) / 2;
+
+  intrinsic.unrequireEdgeLengths();
+  intrinsic.unrequireFaceAreas();
+  intrinsic.unrequireVertexDualAreas();
+  intrinsic.unrequireEdgeCotanWeights();
+  intrinsic.unrequireHalfedgeVectorsInFace();
+  intrinsic.unrequireHalfedgeVectorsInVertex();
+  intrinsic.unrequireTransportVectorsAlongHalfedge();
+}
+
+size_t CutLocusSolver::up(const std::vector<size_t>& parentEdge, size_t v) const {
+  if (parentEdge[v] == NONE) return NONE;
+  const auto& ends = edgeVertices[parentEdge[v]];
+  return ends[0] == v ? ends[1] : ends[0];
+}
+
+// Step 1: the distance is linear on each intrinsic triangle; its gradient in the face's own frame.
+std::vector<Vec2> CutLocusSolver::faceGradients(const std::vector<double>& distance) const {
+  std::vector<Vec2> gradient(faceVertices.size(), Vec2{0, 0});
+  for (size_t f = 0; f < faceVertices.size(); f++) {
+    const auto& fv = faceVertices[f];
+    if (!std::isfinite(distance[fv[0]])) continue; // faces of other components
+    for (int k = 0; k < 3; k++) {
+      gradient[f][0] += distance[fv[k]] * faceHatGradients[f][k][0];
+      gradient[f][1] += distance[fv[k]] * faceHatGradients[f][k][1];
+    }
+  }
+  return gradient;
+}
+
+// Step 2: area-weighted mean of the incident face gradients, each rotated into the vertex frame.
+std::vector<Vec2> CutLocusSolver::vertexGradients(const std::vector<Vec2>& faceGradient,
+                                                  const std::vector<double>& distance) const {
+  std::vector<Vec2> gradient(nVertices, Vec2{0, 0});
+  for (size_t v = 0; v < nVertices; v++) {
+    if (!std::isfinite(distance[v])) continue;
+    double weightSum = 0;
+    for (size_t c = cornerStart[v]; c < cornerStart[v + 1]; c++) {
+      Vec2 g = rotate(faceGradient[corners[c].face], corners[c].faceToVertex);
+      gradient[v][0] += corners[c].weight * g[0];
+      gradient[v][1] += corners[c].weight * g[1];
+      weightSum += corners[c].weight;
+    }
+    if (weightSum > 0) gradient[v] = {gradient[v][0] / weightSum, gradient[v][1] / weightSum};
+  }
+  return gradient;
+}
+
+// Step 3: across the cut locus, geodesics from different directions collide and the gradient turns
+// sharply. Largest angle between any two gradients of the closed one-ring, all transported into the
+// vertex's frame: a vertex right on the ridge has an averaged (meaningless) gradient of its own, but
+// its neighbours on the two sides point against each other.
+std::vector<double> CutLocusSolver::angleDeviations(const std::vector<Vec2>& vertexGradient,
+                                                    const std::vector<double>& distance) const {
+  std::vector<double> deviation(nVertices, std::numeric_limits<double>::quiet_NaN());
+  std::vector<Vec2> ring;
+  for (size_t v = 0; v < nVertices; v++) {
+    if (!std::isfinite(distance[v])) continue;
+    ring.clear();
+    auto add = [&](const Vec2& g) {
+      double length = std::hypot(g[0], g[1]);
+      if (length > 0) ring.push_back({g[0] / length, g[1] / length});
+    };
+    add(vertexGradient[v]);
+    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++)
+      add(rotate(vertexGradient[neighbours[n].vertex], neighbours[n].transportToCenter));
+    double smallestCosine = 1;
+    for (size_t i = 0; i < ring.size(); i++)
+      for (size_t j = i + 1; j < ring.size(); j++)
+        smallestCosine = std::min(smallestCosine, ring[i][0] * ring[j][0] + ring[i][1] * ring[j][1]);
+    double largest = std::acos(std::max(-1.0, smallestCosine));
+    deviation[v] = largest;
+  }
+  return deviation;
+}
+
+// Step 4: cotan Laplacian over the dual area, times h to make it scale-free. A ridge of the distance
+// is a concave kink, so the Laplacian is strongly negative on the cut locus (and ~h/r elsewhere).
+std::vector<double> CutLocusSolver::distanceLaplacian(const std::vector<double>& distance) const {
+  std::vector<double> laplacian(nVertices, std::numeric_limits<double>::quiet_NaN());
+  for (size_t v = 0; v < nVertices; v++) {
+    if (!std::isfinite(distance[v]) || vertexArea[v] <= 0) continue;
+    double sum = 0;
+    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++)
+      sum += neighbours[n].cotanWeight * (distance[neighbours[n].vertex] - distance[v]);
+    laplacian[v] = meanEdge * sum / vertexArea[v];
+  }
+  return laplacian;
+}
+
+// Steps 5-6: spanning tree of the source's component rooted at the farthest vertex, grown Prim-style
+// from the most ridge-like frontier vertex first (lowest Laplacian), each vertex hanging from its most
+// ridge-like neighbour already in the tree. Vertices passing the thresholds go ahead of all others, so
+// the tree first spans every passing vertex connected to the root through passing vertices: that
+// subtree is the restriction in growing mode (a breadth-first search from the root through passing
+// vertices), and within it the tree runs along the ridge crests.
+std::vector<size_t> CutLocusSolver::ridgeTree(const std::vector<double>& laplacian, const std::vector<char>& passing,
+                                              const std::vector<double>& distance, size_t root) const {
+  std::vector<size_t> parent(nVertices, NONE);
+  std::vector<char> inTree(nVertices, 0), queued(nVertices, 0);
+  using Entry = std::pair<std::pair<bool, double>, size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
+  auto push = [&](size_t v) {
+    queued[v] = 1;
+    frontier.push({{!passing[v], std::isnan(laplacian[v]) ? INFINITY : laplacian[v]}, v});
+  };
+  push(root);
+  while (!frontier.empty()) {
+    size_t v = frontier.top().second;
+    frontier.pop();
+    inTree[v] = 1;
+    std::pair<bool, double> best{true, INFINITY};
+    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++) {
+      size_t w = neighbours[n].vertex;
+      std::pair<bool, double> key{!passing[w], laplacian[w]};
+      if (inTree[w] && w != v && (parent[v] == NONE || key < best)) {
+        best = key;
+        parent[v] = neighbours[n].edge;
+      }
+      if (!queued[w] && std::isfinite(distance[w])) push(w);
+    }
+  }
+  parent[root] = NONE;
+  return parent;
+}
+
+std::vector<char> CutLocusSolver::passingVertices(const std::vector<double>& angleDeviation,
+                                                  const std::vector<double>& laplacian,
+                                                  const CutLocusOptions& options) const {
+  std::vector<char> passing(nVertices, 0);
+  for (size_t v = 0; v < nVertices; v++)
+    passing[v] = angleDeviation[v] >= options.angleThreshold && laplacian[v] <= -options.laplacianThreshold;
+  return passing;
+}
+
+// Growing: the root and every vertex whose whole tree path to the root passes. Pruning: every passing
+// vertex and its whole tree path to the root.
+std::vector<char> CutLocusSolver::restrictTree(const std::vector<size_t>& parent, const std::vector<char>& passing,
+                                               size_t root, CutLocusRestriction mode) const {
+  std::vector<char> kept(nVertices, 0), known(nVertices, 0);
+  if (mode == CutLocusRestriction::Pruning) {
+    kept[root] = 1;
+    for (size_t v = 0; v < nVertices; v++)
+      if (passing[v] && parent[v] != NONE)
+        for (size_t w = v; !kept[w]; w = up(parent, w)) kept[w] = 1;
+    return kept;
+  }
+  kept[root] = known[root] = 1;
+  std::vector<size_t> path;
+  for (size_t v = 0; v < nVertices; v++) {
+    path.clear();
+    size_t w = v;
+    for (; w != NONE && !known[w]; w = up(parent, w)) path.push_back(w);
+    bool keep = w != NONE && kept[w];
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+      keep = keep && passing[*it];
+      kept[*it] = keep;
+      known[*it] = 1;
+    }
+  }
+  return kept;
+}
+
+// Step 7a: the primal tree of the homology step. The kept vertices keep their ridge-tree edges; the
+// rest is grown from them by Prim, farthest vertex first, each hanging from its farthest tree neighbour.
+// Climbing this tree from anywhere goes uphill in distance, i.e. towards and then along the ridges,
+// even where they are too weak to pass the thresholds.
+std::vector<size_t> CutLocusSolver::linkingTree(const std::vector<size_t>& ridgeParent, const std::vector<char>& kept,
+                                                const std::vector<double>& distance) const {
+  std::vector<size_t> parent(nVertices, NONE);
+  std::vector<char> inTree(kept), queued(kept);
+  using Entry = std::pair<double, size_t>;
+  std::priority_queue<Entry> frontier;
+  for (size_t v = 0; v < nVertices; v++) {
+    if (!kept[v]) continue;
+    parent[v] = ridgeParent[v];
+    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++) {
+      size_t w = neighbours[n].vertex;
+      if (!queued[w] && std::isfinite(distance[w])) {
+        queued[w] = 1;
+        frontier.push({distance[w], w});
+      }
+    }
+  }
+  while (!frontier.empty()) {
+    size_t v = frontier.top().second;
+    frontier.pop();
+    inTree[v] = 1;
+    double best = -INFINITY;
+    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++) {
+      size_t w = neighbours[n].vertex;
+      if (inTree[w] && w != v && distance[w] > best) {
+        best = distance[w];
+        parent[v] = neighbours[n].edge;
+      }
+      if (!queued[w] && std::isfinite(distance[w])) {
+        queued[w] = 1;
+        frontier.push({distance[w], w});
+      }
+    }
+  }
+  return parent;
+}
+
+// Step 7b (closed genus g > 0): tree-cotree. The primal tree is the linking tree; the dual cotree grows
+// over faces from the source outwards by distance and never crosses a primal tree edge. The 2g edges
+// in neither are homology generators, and the cotree leaves them where the fronts meet: on the cut locus.
+std::vector<size_t> CutLocusSolver::homologyGenerators(const std::vector<size_t>& parent,
+                                                       const std::vector<double>& distance, size_t source) const {
+  // By edge, not by endpoints: intrinsic triangulations can have two edges between the same vertices.
+  auto isTreeEdge = [&](size_t e) { return parent[edgeVertices[e][0]] == e || parent[edgeVertices[e][1]] == e; };
+  auto faceKey = [&](size_t f) {
+    const auto& fv = faceVertices[f];
+    return distance[fv[0]] + distance[fv[1]] + distance[fv[2]];
+  };
+
+  std::vector<char> faceIn(faceVertices.size(), 0), edgeUsed(edgeVertices.size(), 0);
+  using Entry = std::pair<double, size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
+  size_t start = corners[cornerStart[source]].face;
+  frontier.push({faceKey(start), start});
+  faceIn[start] = 1;
+  while (!frontier.empty()) {
+    size_t f = frontier.top().second;
+    frontier.pop();
+    for (size_t e : faceEdges[f]) {
+      if (edgeUsed[e] || isTreeEdge(e)) continue;
+      size_t g = edgeFaces[e][0] == f ? edgeFaces[e][1] : edgeFaces[e][0];
+      if (g == NONE || faceIn[g]) continue;
+      edgeUsed[e] = 1;
+      faceIn[g] = 1;
+      frontier.push({faceKey(g), g});
+    }
+  }
+
+  std::vector<size_t> generators;
+  for (size_t e = 0; e < edgeVertices.size(); e++)
+    if (std::isfinite(distance[edgeVertices[e][0]]) && !edgeUsed[e] && !isTreeEdge(e)) generators.push_back(e);
+  return generators;
+}
+
+CutLocus CutLocusSolver::compute(const std::vector<double>& distance, size_t source,
+                                 const CutLocusOptions& options) const {
+  if (distance.size() != nVertices) throw InputError("cut locus: one distance per vertex is needed");
+  if (source >= nVertices) throw InputError("cut locus: source vertex " + std::to_string(source) + " does not exist");
+  const int component = vertexComponent[source];
+  std::vector<double> dist(distance);
+  for (size_t v = 0; v < nVertices; v++)
+    if (vertexComponent[v] != component || std::isnan(dist[v])) dist[v] = INFINITY;
+
+  CutLocus result;
+  result.angleDeviation = angleDeviations(vertexGradients(faceGradients(dist), dist), dist);
+  result.laplacian = distanceLaplacian(dist);
+  result.root = source;
+  for (size_t v = 0; v < nVertices; v++)
+    if (std::isfinite(dist[v]) && dist[v] > dist[result.root]) result.root = v;
+  if (cornerStart[source] == cornerStart[source + 1]) { // a vertex used by no face
+    result.vertices = {source};
+    return result;
+  }
+
+  std::vector<char> passing = passingVertices(result.angleDeviation, result.laplacian, options);
+  std::vector<size_t> parent = ridgeTree(result.laplacian, passing, dist, result.root);
+  std::vector<char> kept = restrictTree(parent, passing, result.root, options.restriction);
+
+  // Link every generator to the restricted set by climbing the tree from both ends: each adds exactly
+  // one cycle, since everything else added is tree edges hanging from the (parent-closed) kept set.
+  std::vector<size_t> generators;
+  if (componentGenus[component] > 0) {
+    parent = linkingTree(parent, kept, dist);
+    generators = homologyGenerators(parent, dist, source);
+  }
+  for (size_t e : generators)
+    for (size_t v : edgeVertices[e])
+      for (; !kept[v]; v = up(parent, v)) kept[v] = 1;
+
+  // Graph of kept vertices: tree edges to their parents plus the generators.
+  std::vector<std::vector<size_t>> adjacent(nVertices);
+  auto link = [&](size_t a, size_t b) {
+    adjacent[a].push_back(b);
+    adjacent[b].push_back(a);
+  };
+  for (size_t v = 0; v < nVertices; v++)
+    if (kept[v] && parent[v] != NONE) link(v, up(parent, v));
+  for (size_t e : generators) link(edgeVertices[e][0], edgeVertices[e][1]);
+
+  // Step 8: remove leaf branches (leaf .. first junction) shorter than pruneDepth edges. The root, as
+  // the farthest point, always stays; a graph that is a single path is kept whole.
+  std::vector<size_t> degree(nVertices);
+  for (size_t v = 0; v < nVertices; v++) degree[v] = adjacent[v].size();
+  std::vector<size_t> branch;
+  for (size_t leaf = 0; leaf < nVertices; leaf++) {
+    if (!kept[leaf] || degree[leaf] != 1 || leaf == result.root) continue;
+    branch.assign(1, leaf);
+    size_t previous = leaf, v = adjacent[leaf][0];
+    while (degree[v] == 2 && v != result.root) {
+      branch.push_back(v);
+      size_t next = adjacent[v][0] == previous ? adjacent[v][1] : adjacent[v][0];
+      previous = v;
+      v = next;
+    }
+    bool endsAtJunction = degree[v] >= 3 || v == result.root;
+    if (endsAtJunction && branch.size() < static_cast<size_t>(std::max(options.pruneDepth, 0)))
+      for (size_t b : branch) kept[b] = 0;
+  }
+
+  std::vector<size_t> node(nVertices, NONE);
+  for (size_t v = 0; v < nVertices; v++)
+    if (kept[v]) {
+      node[v] = result.vertices.size();
+      result.vertices.push_back(v);
+    }
+  for (size_t v = 0; v < nVertices; v++)
+    for (size_t w : adjacent[v])
+      if (v < w && kept[v] && kept[w]) result.edges.push_back({node[v], node[w]});
+  return result;
+}
+
+} // namespace cscd

@@ -1,0 +1,42 @@
+#include "mesh/measures.h"
+
+#include <cmath>
+
+using namespace geometrycentral;
+using namespace geometrycentral::surface;
+
+namespace cscd {
+
+Vector3 loopCentroid(const std::vector<Vector3>& loop) {
+  Vector3 sum{0, 0, 0};
+  double total = 0;
+  for (size_t i = 0; i < loop.size(); i++) {
+    const Vector3 &a = loop[i], &b = loop[(i + 1) % loop.size()];
+    double length = norm(b - a);
+    sum += length * (a + b) / 2;
+    total += length;
+  }
+  return total > 0 ? sum / total : (loop.empty() ? sum : loop.front());
+}
+
+double windingNumber(VertexPositionGeometry& geometry, Vector3 point) {
+  double solidAngle = 0;
+  for (Face f : geometry.mesh.faces()) {
+    Halfedge h = f.halfedge();
+    Vector3 a = geometry.vertexPositions[h.vertex()] - point;
+    Vector3 b = geometry.vertexPositions[h.next().vertex()] - point;
+    Vector3 c = geometry.vertexPositions[h.next().next().vertex()] - point;
+    double la = norm(a), lb = norm(b), lc = norm(c);
+    // Van Oosterom & Strackee: tan(omega / 2) = det[a b c] / (|a||b||c| + (a.b)|c| + (b.c)|a| + (c.a)|b|)
+    double numerator = dot(a, cross(b, c));
+    double denominator = la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb;
+    solidAngle += 2 * std::atan2(numerator, denominator);
+  }
+  return solidAngle / (4 * M_PI);
+}
+
+double separatorScore(const std::array<double, 2>& areas, double length) {
+  return areas[1] > 0 && length > 0 ? areas[0] / (areas[1] * length) : 0;
+}
+
+} // namespace cscd

@@ -1,0 +1,20 @@
+#pragma once
+
+#include "geometrycentral/surface/vertex_position_geometry.h"
+
+#include <array>
+#include <vector>
+
+namespace cscd {
+
+// Length-weighted centroid of a closed polyline (its points, the last joined to the first).
+geometrycentral::Vector3 loopCentroid(const std::vector<geometrycentral::Vector3>& loop);
+
+// Generalised winding number of the mesh around a point (1 inside a closed outward-oriented mesh,
+// 0 outside; fractional near holes), by summing the signed solid angles of the triangles.
+double windingNumber(geometrycentral::surface::VertexPositionGeometry& geometry, geometrycentral::Vector3 point);
+
+// The separator score of paper Sec. 4.2.1: s = A1 / (A2 * length), A1 <= A2 the areas of the two sides.
+double separatorScore(const std::array<double, 2>& areas, double length);
+
+} // namespace cscd

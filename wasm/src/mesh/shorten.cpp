@@ -1,0 +1,211 @@
+#include "mesh/shorten.h"
+
+#include "mesh/union_find.h"
+
+#include "geometrycentral/surface/edge_length_geometry.h"
+#include "geometrycentral/surface/flip_geodesics.h"
+
+#include <algorithm>
+#include <memory>
+#include <set>
+#include <queue>
+
+using namespace geometrycentral;
+using namespace geometrycentral::surface;
+
+namespace cscd {
+namespace {
+
+// A patch of the intrinsic triangulation as a mesh of its own, with the maps back to the triangulation.
+struct Patch {
+  std::unique_ptr<ManifoldSurfaceMesh> mesh;
+  std::unique_ptr<EdgeLengthGeometry> geometry;
+  HalfedgeData<Halfedge> toIntrinsic;  // patch halfedge -> intrinsic halfedge (interior halfedges)
+  HalfedgeData<Halfedge> fromIntrinsic; // intrinsic halfedge -> patch halfedge (selected faces only)
+};
+
+// Builds the patch of the selected faces. A vertex whose selected faces form several fans (a bow-tie
+// inside the patch) becomes one patch vertex per fan, so the patch is always a manifold.
+Patch buildPatch(IntrinsicTriangulation& intrinsic, const std::vector<char>& selected) {
+  ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
+  std::vector<Face> faces;
+  FaceData<size_t> slot(mesh, SIZE_MAX);
+  for (Face f : mesh.faces())
+    if (selected[f.getIndex()]) {
+      slot[f] = faces.size();
+      faces.push_back(f);
+    }
+
+  // Corner of halfedge h: the corner at h's tail in h's face.
+  auto corner = [&](Halfedge h) {
+    Halfedge first = h.face().halfedge();
+    size_t k = h == first ? 0 : h == first.next() ? 1 : 2;
+    return 3 * slot[h.face()] + k;
+  };
+  UnionFind fans(3 * faces.size());
+  for (Face f : faces)
+    for (Halfedge h : f.adjacentHalfedges()) {
+      Halfedge t = h.twin();
+      if (!t.isInterior() || slot[t.face()] == SIZE_MAX) continue;
+      fans.unite(uint32_t(corner(h)), uint32_t(corner(t.next())));
+      fans.unite(uint32_t(corner(h.next())), uint32_t(corner(t)));
+    }
+
+  std::vector<size_t> patchVertexOfFan(3 * faces.size(), SIZE_MAX);
+  size_t nPatchVertices = 0;
+  std::vector<std::vector<size_t>> polygons;
+  std::vector<std::array<Halfedge, 3>> faceHalfedges;
+  for (Face f : faces) {
+    std::vector<size_t> polygon;
+    std::array<Halfedge, 3> hs;
+    size_t k = 0;
+    for (Halfedge h : f.adjacentHalfedges()) {
+      size_t fan = fans.find(uint32_t(corner(h)));
+      if (patchVertexOfFan[fan] == SIZE_MAX) patchVertexOfFan[fan] = nPatchVertices++;
+      polygon.push_back(patchVertexOfFan[fan]);
+      hs[k++] = h;
+    }
+    polygons.push_back(polygon);
+    faceHalfedges.push_back(hs);
+  }
+
+  Patch patch;
+  patch.mesh = std::make_unique<ManifoldSurfaceMesh>(polygons);
+  patch.toIntrinsic = HalfedgeData<Halfedge>(*patch.mesh);
+  patch.fromIntrinsic = HalfedgeData<Halfedge>(mesh);
+  EdgeData<double> lengths(*patch.mesh, 0.);
+  intrinsic.requireEdgeLengths();
+  for (size_t i = 0; i < faces.size(); i++) {
+    // Match halfedges by their tail's patch vertex: the three corners of a face are distinct fans.
+    for (Halfedge ph : patch.mesh->face(i).adjacentHalfedges()) {
+      for (size_t k = 0; k < 3; k++) {
+        if (polygons[i][k] != ph.tailVertex().getIndex()) continue;
+        Halfedge ih = faceHalfedges[i][k];
+        patch.toIntrinsic[ph] = ih;
+        patch.fromIntrinsic[ih] = ph;
+        lengths[ph.edge()] = intrinsic.edgeLengths[ih.edge()];
+      }
+    }
+  }
+  patch.geometry = std::make_unique<EdgeLengthGeometry>(*patch.mesh, lengths);
+  return patch;
+}
+
+// A point of the patch as a point of the intrinsic triangulation (barycentric in the matching face).
+SurfacePoint toIntrinsic(const Patch& patch, const SurfacePoint& onPatch) {
+  SurfacePoint p = onPatch.inSomeFace();
+  Halfedge ph = p.face.halfedge();
+  Halfedge ih[3] = {patch.toIntrinsic[ph], patch.toIntrinsic[ph.next()], patch.toIntrinsic[ph.next().next()]};
+  Halfedge first = ih[0].face().halfedge();
+  Vector3 bary{0, 0, 0};
+  for (int k = 0; k < 3; k++) bary[ih[k] == first ? 0 : ih[k] == first.next() ? 1 : 2] = p.faceCoords[k];
+  return SurfacePoint(ih[0].face(), bary);
+}
+
+// Areas of the two sides of the loop: faces flooded from the left and from the right of the loop,
+// never across it. A loop that does not separate its region reports (0, area of the region).
+std::array<double, 2> sideAreas(FlipEdgeNetwork& network, const std::vector<Halfedge>& path) {
+  SignpostIntrinsicTriangulation& tri = *network.tri;
+  tri.requireFaceAreas();
+  FaceData<int> side(network.mesh, -1);
+  std::array<double, 2> area{0, 0};
+  bool separates = true;
+  for (int s = 0; s < 2; s++) {
+    std::queue<Face> queue;
+    for (Halfedge he : path) {
+      Halfedge seed = s == 0 ? he : he.twin();
+      if (!seed.isInterior()) continue;
+      if (side[seed.face()] == 1 - s) separates = false;
+      if (side[seed.face()] < 0) {
+        side[seed.face()] = s;
+        queue.push(seed.face());
+      }
+    }
+    while (!queue.empty()) {
+      Face f = queue.front();
+      queue.pop();
+      area[s] += tri.faceAreas[f];
+      for (Halfedge h : f.adjacentHalfedges()) {
+        Halfedge t = h.twin();
+        if (!t.isInterior() || network.edgeInPath(h.edge())) continue;
+        if (side[t.face()] == 1 - s) separates = false;
+        if (side[t.face()] < 0) {
+          side[t.face()] = s;
+          queue.push(t.face());
+        }
+      }
+    }
+  }
+  if (!separates) return {0, area[0] + area[1]};
+  return {std::min(area[0], area[1]), std::max(area[0], area[1])};
+}
+
+} // namespace
+
+Halfedge intrinsicHalfedge(ManifoldSurfaceMesh& mesh, size_t a, size_t b) {
+  for (Halfedge he : mesh.vertex(a).outgoingHalfedges())
+    if (he.tipVertex().getIndex() == b) return he;
+  return Halfedge();
+}
+
+ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPositionGeometry& inputGeometry,
+                          const std::vector<size_t>& loopVertices, const std::optional<Sphere>& sphere) {
+  ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
+  ShortenedLoop result;
+  const size_t n = loopVertices.size();
+
+  std::vector<char> selected(mesh.nFaces(), sphere ? 0 : 1);
+  if (sphere) {
+    const double r2 = sphere->radius * sphere->radius * (1 + 1e-9);
+    auto inside = [&](Vertex v) { return norm2(inputGeometry.vertexPositions[v.getIndex()] - sphere->center) <= r2; };
+    for (Face f : mesh.faces()) {
+      bool all = true;
+      for (Vertex v : f.adjacentVertices()) all = all && inside(v);
+      selected[f.getIndex()] = all;
+    }
+    // The loop's own one-ring stays in, so that the loop is a path of the patch through single fans.
+    for (size_t v : loopVertices)
+      for (Face f : mesh.vertex(v).adjacentFaces()) selected[f.getIndex()] = 1;
+  }
+
+  std::unique_ptr<Patch> patch;
+  std::vector<Halfedge> loop;
+  try {
+    patch = std::make_unique<Patch>(buildPatch(intrinsic, selected));
+    for (size_t i = 0; i < n; i++) {
+      Halfedge ih = intrinsicHalfedge(mesh, loopVertices[i], loopVertices[(i + 1) % n]);
+      if (ih == Halfedge()) throw std::runtime_error("the loop jumps between vertices that share no edge");
+      Halfedge ph = ih.isInterior() ? patch->fromIntrinsic[ih] : patch->fromIntrinsic[ih.twin()].twin();
+      loop.push_back(ph);
+    }
+  } catch (const std::exception& e) {
+    result.failure = std::string("could not build the constraint region: ") + e.what();
+    return result;
+  }
+
+  FlipEdgeNetwork network(*patch->mesh, *patch->geometry, {loop});
+  const double initialLength = network.length();
+  network.iterativeShorten(100000);
+  // A loop around no feature shrinks to nothing, or to a path that runs back over its own edges.
+  std::vector<Halfedge> path = network.paths.empty() ? std::vector<Halfedge>() : network.paths[0]->getHalfedgeList();
+  std::set<Halfedge> onPath(path.begin(), path.end());
+  bool doubledBack = std::all_of(path.begin(), path.end(), [&](Halfedge he) { return onPath.count(he.twin()) > 0; });
+  if (path.empty() || doubledBack || !(network.length() > 1e-9 * initialLength)) {
+    result.failure = "the loop shrank to a point: it encloses no feature inside the constraint region";
+    return result;
+  }
+  // One intrinsic edge may be the whole loop (e.g. a meridian of a torus as a self-edge): that is fine.
+  result.length = network.length();
+
+  std::vector<std::vector<SurfacePoint>> polylines = network.getPathPolyline();
+  std::vector<SurfacePoint>& onPatch = polylines.front();
+  const SurfacePoint &first = onPatch.front(), &last = onPatch.back();
+  if (onPatch.size() > 1 && first.type == SurfacePointType::Vertex && last.type == SurfacePointType::Vertex &&
+      first.vertex == last.vertex)
+    onPatch.pop_back(); // closed: the last point repeats the first
+  for (const SurfacePoint& p : onPatch) result.loop.push_back(intrinsic.equivalentPointOnInput(toIntrinsic(*patch, p)));
+  result.areas = sideAreas(network, path);
+  return result;
+}
+
+} // namespace cscd

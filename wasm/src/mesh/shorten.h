@@ -1,0 +1,41 @@
+#pragma once
+
+#include "geometrycentral/surface/signpost_intrinsic_triangulation.h"
+#include "geometrycentral/surface/vertex_position_geometry.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cscd {
+
+// The locality constraint of paper Sec. 4.1.6: a Euclidean ball around the source.
+struct Sphere {
+  geometrycentral::Vector3 center;
+  double radius;
+};
+
+struct ShortenedLoop {
+  // Closed polyline on the input mesh (the first point is not repeated at the end).
+  std::vector<geometrycentral::surface::SurfacePoint> loop;
+  double length = 0;                  // geodesic length
+  std::array<double, 2> areas{0, 0};  // the two sides inside the constraint region, smaller first
+  std::string failure;                // empty on success
+};
+
+// Shortens a closed loop of vertices of the intrinsic Delaunay triangulation into a geodesic loop by
+// intrinsic edge flips (Sharp & Crane 2020, geometry-central's FlipEdgeNetwork). With a sphere, the
+// flips run on the patch of triangles whose corners lie inside it, together with the triangles
+// around the loop's own vertices: no flip can involve a vertex outside, and the patch boundary stops
+// the loop from sliding away. Without one, the patch is the whole surface. The patch is built per
+// loop, so the cost follows the size of the constraint region, and `intrinsic` is never modified.
+ShortenedLoop shortenLoop(geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic,
+                          geometrycentral::surface::VertexPositionGeometry& inputGeometry,
+                          const std::vector<size_t>& loopVertices, const std::optional<Sphere>& sphere);
+
+// The intrinsic halfedge from a to b (the first one, should the triangulation have parallel edges).
+geometrycentral::surface::Halfedge intrinsicHalfedge(geometrycentral::surface::ManifoldSurfaceMesh& mesh, size_t a,
+                                                     size_t b);
+
+} // namespace cscd

@@ -184,6 +184,15 @@ describe('stage 1: one local separator', () => {
     }
   });
 
+  it('shortens loops where the intrinsic triangulation has parallel edges', () => {
+    // These elephant.ply sources once failed: their constraint patch has two intrinsic edges joining
+    // the same pair of vertices.
+    const mesh = readMesh(sharedMesh('elephant.ply'));
+    const surface = core.openSurface(mesh);
+    for (const source of [69, 15648, 24165]) expectWellFormed(mesh, surface, surface.separator(source));
+    surface.dispose();
+  });
+
   it('reports failures as a status and checks its options', () => {
     const surface = core.openSurface(readMesh(sharedMesh('spot.ply')));
     expect(() => surface.separator(0, { target: 'nearest' as 'euclid' })).toThrow(/target must be 'euclid' or 'geodesic'/);

@@ -69,8 +69,18 @@ Patch buildPatch(IntrinsicTriangulation& intrinsic, const std::vector<char>& sel
     faceHalfedges.push_back(hs);
   }
 
+  // Twins given explicitly: intrinsic triangulations can have several edges between the same two
+  // vertices, which a polygon list alone cannot express.
+  std::vector<std::vector<std::tuple<size_t, size_t>>> twins(faces.size());
+  for (size_t i = 0; i < faces.size(); i++)
+    for (const Halfedge& h : faceHalfedges[i]) {
+      Halfedge t = h.twin();
+      bool inside = t.isInterior() && slot[t.face()] != SIZE_MAX;
+      twins[i].emplace_back(inside ? slot[t.face()] : INVALID_IND, inside ? corner(t) % 3 : INVALID_IND);
+    }
+
   Patch patch;
-  patch.mesh = std::make_unique<ManifoldSurfaceMesh>(polygons);
+  patch.mesh = std::make_unique<ManifoldSurfaceMesh>(polygons, twins);
   patch.toIntrinsic = HalfedgeData<Halfedge>(*patch.mesh);
   patch.fromIntrinsic = HalfedgeData<Halfedge>(mesh);
   EdgeData<double> lengths(*patch.mesh, 0.);

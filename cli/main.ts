@@ -9,8 +9,9 @@ import { MESH_EXTENSIONS, MeshFormatError } from '../lib/io/index.ts';
 import { UsageError, type Command } from './command.ts';
 import { distance } from './commands/distance.ts';
 import { info } from './commands/info.ts';
+import { separator } from './commands/separator.ts';
 
-const COMMANDS: Command[] = [info, distance];
+const COMMANDS: Command[] = [info, distance, separator];
 
 async function main(argv: string[]): Promise<void> {
   const [first, ...rest] = argv;
@@ -84,7 +85,7 @@ function overview(): string {
     '',
     'Commands:',
     table([
-      ...COMMANDS.map((c): [string, string] => [usage(c).slice('cscd '.length), c.summary]),
+      ...COMMANDS.map((c): [string, string] => [[c.name, ...c.args, Object.keys(c.options).length > 1 ? '[options]' : ''].join(' ').trim(), c.summary]),
       ['help <command>', 'show the options of a command'],
     ]),
     '',

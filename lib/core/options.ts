@@ -9,3 +9,11 @@ export const defaultOptions: Readonly<Options> = Object.freeze({
   laplacianThreshold: 0.2,
   pruneDepth: 3,
 });
+
+/** Accepted ranges of the numeric options; the core checks the same (toOptions in bindings.cpp). */
+export const optionRanges = Object.freeze({
+  seed: [0, 0xffffffff],
+  angleThreshold: [0, Math.PI],
+  laplacianThreshold: [0, 1e6],
+  pruneDepth: [0, 1000],
+} as const);

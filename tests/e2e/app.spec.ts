@@ -64,11 +64,13 @@ test('loads the sample mesh and draws it lit', async ({ page }) => {
   expect(stats.hueBins, 'no colormap yet').toBeLessThanOrEqual(2);
 });
 
-test('a click on the mesh shows geodesic distance as a colormap', async ({ page }) => {
+test('a click on the mesh shows geodesic distance (stage 1, step 1) as a colormap', async ({ page }) => {
   const before = await openSample(page);
   const after = await pickAndWait(page, before);
   expectColormap(before, after);
-  await expect(page.getByTestId('timing-distance')).toHaveText(/\d+(\.\d)? (ms|s)/);
+  await expect(page.getByTestId('timing-separator')).toHaveText(/\d+(\.\d)? (ms|s)/);
+  await expect(page.getByTestId('timing-stage-distance')).toHaveText(/\d+(\.\d)? (ms|s)/);
+  await expect(page.getByTestId('stage-index')).toHaveText('1');
   await expect(page.getByTestId('distance-max')).toHaveText(/^\d/);
   await expect(page.getByTestId('status')).toContainText('Ready');
 });
@@ -112,7 +114,7 @@ test('a malformed file shows an error and keeps the previous mesh working', asyn
   await expect(page.getByRole('alert')).toBeHidden();
 });
 
-test('a non-manifold mesh is shown with its facts and refuses distance with a message', async ({ page }) => {
+test('a non-manifold mesh is shown with its facts and refuses stage 1 with a message', async ({ page }) => {
   const before = await openSample(page);
   // Three sheets sharing the edge x = z = 0 (a non-manifold edge), each a 2x2 grid of quads.
   const lines: string[] = [];
@@ -132,7 +134,9 @@ test('a non-manifold mesh is shown with its facts and refuses distance with a me
 
   await clickMesh(page, shown);
   await waitForState(page, 'error');
-  await expect(page.getByRole('alert')).toContainText('Could not compute the geodesic distance');
+  await expect(page.getByRole('alert')).toContainText('Could not compute stage 1');
+  await expect(page.getByRole('alert')).toContainText('non-manifold');
+  await expect(page.getByTestId('separator')).toBeHidden();
   await expect(page.getByTestId('file-name')).toHaveText('fins.obj');
 });
 

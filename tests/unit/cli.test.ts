@@ -30,7 +30,8 @@ describe('cscd', () => {
     const result = cscd('--help');
     expect(result.status).toBe(0);
     expect(result.stdout).toMatch(/info <mesh>/);
-    expect(result.stdout).toMatch(/distance <mesh> --source V \[--out FILE\]/);
+    expect(result.stdout).toMatch(/distance <mesh> \[options\]/);
+    expect(result.stdout).toMatch(/separator <mesh> \[options\]/);
     expect(cscd('help', 'distance').stdout).toMatch(/--source V\s+source vertex index/);
   });
 

@@ -1,16 +1,22 @@
 /**
- * Wiring: files -> worker (parse, inspect, prepare) -> viewer + panel; clicks -> worker (distance)
- * -> colormap. `document.body.dataset.state` is loading | ready | computing | error, for tests.
+ * Wiring: files -> worker (parse, inspect, prepare) -> viewer + panel; clicks -> worker (stage 1 of
+ * CSCD-M from the picked vertex) -> layers shown stage by stage. `document.body.dataset.state` is
+ * loading | ready | computing | error, `dataset.stage` the stage shown and `dataset.separatorRuns`
+ * counts the stage-1 replies shown, for tests.
  */
 import './style.css';
+import { defaultOptions } from '../../lib/core/options.ts';
+import type { Options } from '../../lib/core/types.ts';
 import { MESH_EXTENSIONS } from '../../lib/io/index.ts';
 import { niceSpacing } from './viewer/colormap.ts';
 import { SpheresLayer, SurfaceLayer } from './viewer/layers.ts';
+import { separatorLayers } from './viewer/separator-layers.ts';
 import { Viewer, type Pick } from './viewer/viewer.ts';
 import { GeometryClient, WorkerError } from './worker/client.ts';
-import type { OpenedReply } from './worker/protocol.ts';
+import type { OpenedReply, SeparatorReply } from './worker/protocol.ts';
 import { installFileSources } from './ui/files.ts';
 import { Panel } from './ui/panel.ts';
+import { COLORS, LAYER_STAGE, STAGES, StagePanel } from './ui/stages.ts';
 
 const SAMPLE = 'samples/spot.ply';
 
@@ -18,13 +24,25 @@ const panel = new Panel();
 const viewer = new Viewer(document.querySelector<HTMLElement>('#viewport')!);
 const flatBox = document.querySelector<HTMLInputElement>('#opt-flat')!;
 const isolinesBox = document.querySelector<HTMLInputElement>('#opt-isolines')!;
+const targetSelect = document.querySelector<HTMLSelectElement>('#opt-target')!;
+const sphereBox = document.querySelector<HTMLInputElement>('#opt-sphere')!;
+const stagePanel = new StagePanel();
 
 let opening = 0;
 let computing = 0;
 let failed = false;
-/** Bumped whenever a different mesh is shown, so late distance replies for the old one are dropped. */
+/** Bumped whenever a different mesh is shown, so late replies for the old one are dropped. */
 let meshGeneration = 0;
-let latestDistanceRequest = 0;
+let latestSeparatorRequest = 0;
+
+/** The stage-1 run shown, the stage shown, and the layers the user switched off. */
+let separator: SeparatorReply | null = null;
+let stage = 1;
+/** The stage the user stepped to; a run that stopped earlier shows its last stage, the next run this one again. */
+let wantedStage = 1;
+const userHidden = new Set<string>();
+const layerColors = new Map<string, string>([['source', COLORS.source]]);
+let separatorRuns = 0;
 
 function updateState(): void {
   const state = opening > 0 ? 'loading' : computing > 0 ? 'computing' : failed ? 'error' : 'ready';
@@ -80,6 +98,12 @@ async function openBytes(fileName: string, bytes: ArrayBuffer): Promise<void> {
 
 function showMesh(reply: OpenedReply): void {
   meshGeneration++;
+  separator = null;
+  stage = 1;
+  wantedStage = 1;
+  userHidden.clear();
+  stagePanel.setResult(null);
+  delete document.body.dataset.stage;
   viewer.clearLayers();
   viewer.setLayer('surface', new SurfaceLayer(reply.positions, reply.triangles));
   viewer.surface!.setFlatShading(flatBox.checked);
@@ -94,8 +118,7 @@ function showMesh(reply: OpenedReply): void {
   if (unreferencedVertices) notes.push(`${unreferencedVertices} ${unreferencedVertices > 1 ? 'vertices' : 'vertex'} used by no face`);
   if (reply.surfaceError) notes.push(`Geodesic distance is unavailable: ${reply.surfaceError}`);
   panel.setNotes(notes);
-  panel.setTimings({ ...reply.timings, distanceMs: null });
-  panel.setDistance(null);
+  panel.setTimings(reply.timings);
 }
 
 async function openFile(file: File): Promise<void> {
@@ -122,38 +145,130 @@ async function openSample(): Promise<void> {
   }
 }
 
-// -- geodesic distance ---------------------------------------------------------------------------
+// -- stage 1: one separator from the picked vertex ---------------------------------------------
 
-async function computeDistance(pick: Pick): Promise<void> {
+/** Names of the layers a stage-1 run adds (besides the surface's colormap and the source marker). */
+const SEPARATOR_LAYERS = Object.keys(LAYER_STAGE).filter((name) => name !== 'surface' && name !== 'source');
+
+function currentOptions(): Options {
+  return { ...defaultOptions, target: targetSelect.value as Options['target'], sphere: sphereBox.checked };
+}
+
+/** Only the options that differ from the defaults travel to the worker. */
+function changedOptions(): Partial<Options> {
+  const options = currentOptions();
+  return Object.fromEntries(
+    (Object.keys(options) as Array<keyof Options>).filter((k) => options[k] !== defaultOptions[k]).map((k) => [k, options[k]]),
+  ) as Partial<Options>;
+}
+
+async function runSeparator(source: number): Promise<void> {
   const surface = viewer.surface;
   if (!surface || opening > 0) return;
   const generation = meshGeneration;
-  const request = ++latestDistanceRequest;
-  const radius = surface.boundingSphere.radius * 0.022;
-  viewer.setLayer('source', new SpheresLayer('Source vertex', surface.vertexPosition(pick.vertex).toArray(), radius));
+  const request = ++latestSeparatorRequest;
+  if (separator?.separator.source !== source) {
+    const radius = surface.boundingSphere.radius * 0.022;
+    viewer.setLayer('source', new SpheresLayer('Source vertex', surface.vertexPosition(source).toArray(), radius));
+  }
 
   computing++;
-  startAction('computing distance…');
+  startAction('computing stage 1…');
   updateState();
   try {
-    const reply = await client.distance(pick.vertex);
-    if (generation !== meshGeneration || request !== latestDistanceRequest) return; // superseded
-    const spacing = niceSpacing(reply.max);
-    surface.setScalarField({ values: reply.distance, max: reply.max, isolineSpacing: spacing });
-    viewer.requestRender();
-    panel.setDistance({ source: reply.source, max: reply.max, spacing });
-    panel.setTimings({ distanceMs: reply.timings.distanceMs });
+    const reply = await client.separator(source, changedOptions());
+    if (generation !== meshGeneration || request !== latestSeparatorRequest) return; // superseded
+    showSeparator(reply);
   } catch (error) {
-    if (generation !== meshGeneration) return;
-    if (request === latestDistanceRequest) viewer.setLayer('source', null);
-    if (!(error instanceof WorkerError && error.kind === 'crash')) fail('Could not compute the geodesic distance', error);
+    if (generation !== meshGeneration || request !== latestSeparatorRequest) return;
+    clearSeparator();
+    if (!(error instanceof WorkerError && error.kind === 'crash')) fail('Could not compute stage 1 (geodesic distance)', error);
   } finally {
     computing--;
     updateState();
   }
 }
 
-viewer.onPick = (pick) => void computeDistance(pick);
+function showSeparator(reply: SeparatorReply): void {
+  const surface = viewer.surface!;
+  const s = reply.separator;
+  const spacing = niceSpacing(reply.distanceMax);
+  surface.setScalarField({ values: s.distance, max: reply.distanceMax, isolineSpacing: spacing });
+  for (const name of SEPARATOR_LAYERS) viewer.setLayer(name, null);
+  for (const { name, layer, color } of separatorLayers(s, surface)) {
+    layerColors.set(name, color);
+    viewer.setLayer(name, layer);
+  }
+  separator = reply;
+  stagePanel.setResult(reply, spacing);
+  document.body.dataset.separatorRuns = String(++separatorRuns);
+  showStage(wantedStage);
+}
+
+function clearSeparator(): void {
+  separator = null;
+  for (const name of [...SEPARATOR_LAYERS, 'source']) viewer.setLayer(name, null);
+  viewer.surface?.setScalarField(null);
+  viewer.surface?.setDimmed(false);
+  viewer.surface?.setRegion(null);
+  stagePanel.setResult(null);
+  delete document.body.dataset.stage;
+  viewer.requestRender();
+}
+
+/** Shows layers up to `wanted` (clamped to the stages the run reached), earlier ones dimmed. */
+function showStage(wanted: number): void {
+  if (!separator) return;
+  stage = Math.min(Math.max(1, wanted), stagePanel.reachedStage, STAGES.length);
+  for (const [name, layer] of viewer.listLayers()) {
+    const introduced = LAYER_STAGE[name] ?? 1;
+    layer.object.visible = introduced <= stage && !userHidden.has(name);
+    // The source marker stays bright; the surface dims its colormap once lines are drawn on it.
+    layer.setDimmed?.(name !== 'source' && introduced < stage);
+  }
+  // The constraint region on the surface goes with the sphere layer.
+  const sphere = separator.separator.sphere;
+  const sphereShown = !!sphere && stage >= LAYER_STAGE.sphere && !userHidden.has('sphere');
+  viewer.surface?.setRegion(sphereShown ? sphere : null, stage > LAYER_STAGE.sphere ? 0.35 : 1);
+  stagePanel.setStage(stage, separator, new Set(viewer.listLayers().map(([name]) => name)));
+  updateLayerList();
+  viewer.requestRender();
+}
+
+stagePanel.onSelect = (wanted) => {
+  if (!separator) return;
+  showStage(wanted);
+  wantedStage = stage;
+};
+viewer.onPick = (pick: Pick) => void runSeparator(pick.vertex);
+
+function rerun(): void {
+  if (separator) void runSeparator(separator.separator.source);
+}
+targetSelect.addEventListener('change', rerun);
+sphereBox.addEventListener('change', rerun);
+targetSelect.value = defaultOptions.target;
+sphereBox.checked = defaultOptions.sphere;
+
+/** The layer list shows the layers of the stages up to the one shown. */
+function updateLayerList(): void {
+  const shown = viewer.listLayers().filter(([name]) => !separator || (LAYER_STAGE[name] ?? 1) <= stage);
+  panel.setLayers(
+    shown.map(([name, layer]) => ({
+      name,
+      label: layer.label,
+      visible: !userHidden.has(name),
+      color: layerColors.get(name),
+      dimmed: !!separator && name !== 'source' && (LAYER_STAGE[name] ?? 1) < stage,
+    })),
+    (name, visible) => {
+      if (visible) userHidden.delete(name);
+      else userHidden.add(name);
+      if (separator) showStage(stage);
+      else viewer.setLayerVisible(name, visible);
+    },
+  );
+}
 
 // -- panel controls ------------------------------------------------------------------------------
 
@@ -166,11 +281,7 @@ isolinesBox.addEventListener('change', () => {
   viewer.requestRender();
 });
 document.querySelector('#reset-view')!.addEventListener('click', () => viewer.frame());
-viewer.onLayersChange = () =>
-  panel.setLayers(
-    viewer.listLayers().map(([name, layer]) => ({ name, label: layer.label, visible: layer.object.visible })),
-    (name, visible) => viewer.setLayerVisible(name, visible),
-  );
+viewer.onLayersChange = updateLayerList;
 
 document.querySelector('#formats-hint')!.textContent = `or drop ${MESH_EXTENSIONS.join(' ')} anywhere`;
 installFileSources({
@@ -184,12 +295,22 @@ installFileSources({
 /** For end-to-end tests and the console. */
 declare global {
   interface Window {
-    cscd?: { simulateCrash(how?: 'abort' | 'uncaught'): Promise<void>; projectVertex(index: number): { x: number; y: number } | null };
+    cscd?: {
+      simulateCrash(how?: 'abort' | 'uncaught'): Promise<void>;
+      projectVertex(index: number): { x: number; y: number } | null;
+      /** Camera along `direction` (towards the camera) at a sphere around `center` (default: the mesh). */
+      setView(view: { direction?: [number, number, number]; center?: [number, number, number]; radius?: number }): void;
+    };
   }
 }
 window.cscd = {
   simulateCrash: (how) => client.simulateCrash(how).catch(() => undefined),
   projectVertex: (index) => viewer.projectVertex(index),
+  setView: ({ direction, center, radius }) => {
+    const v = (a?: [number, number, number]) => (a ? { x: a[0], y: a[1], z: a[2] } : undefined);
+    viewer.frame({ direction: v(direction), center: v(center), radius });
+    viewer.flush();
+  },
 };
 
 void openSample();

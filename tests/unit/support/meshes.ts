@@ -3,6 +3,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { parseMesh } from '../../../lib/io/index.ts';
 import type { MeshArrays } from '../../../lib/core/index.ts';
+import { random } from '../../../lib/core/random.ts';
 
 export function readMesh(file: string): MeshArrays {
   return parseMesh(new Uint8Array(readFileSync(file)), path.basename(file));
@@ -65,18 +66,6 @@ export function torus(R: number, r: number, nu: number, nv: number): MeshArrays 
 function normalize(p: number[]): number[] {
   const n = Math.hypot(p[0], p[1], p[2]);
   return p.map((x) => x / n);
-}
-
-/** A deterministic pseudo-random generator (mulberry32), so test meshes are the same on every run. */
-export function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 /**

@@ -67,9 +67,15 @@ constexpr int kMaxTargets = 6;
 namespace {
 
 // Trace, constrain and shorten the loop of one target; returns the failure status, or "" on success.
+// Every per-target field is set afresh, so a result never mixes two attempts.
 const char* loopThroughTarget(Surface& surface, size_t source, size_t target, const Options& options,
                               SeparatorResult& result, ShortenedLoop& shortened) {
   result.target = target;
+  result.firstPath.clear();
+  result.secondPath.clear();
+  result.approxLoop.clear();
+  result.approxLength = 0;
+  result.sphere.reset();
   result.traced = traceApproximateLoop(*surface.intrinsic().intrinsicMesh, result.distance, result.cutLocus, target, source);
   if (!result.traced.failure.empty()) {
     result.message = result.traced.failure;
@@ -81,7 +87,6 @@ const char* loopThroughTarget(Surface& surface, size_t source, size_t target, co
   result.approxLength = intrinsicLength(surface, result.traced.loop);
 
   // The sphere reaches exactly the farthest point of the approximate loop (paper Sec. 4.1.6).
-  result.sphere.reset();
   if (options.sphere) {
     const Vector3 center = surface.geometry().vertexPositions[source];
     double radius = 0;

@@ -188,8 +188,9 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
       Halfedge ph = ih.isInterior() ? patch->fromIntrinsic[ih] : patch->fromIntrinsic[ih.twin()].twin();
       loop.push_back(ph);
     }
-  } catch (const std::exception& e) {
-    result.failure = std::string("could not build the constraint region: ") + e.what();
+  } catch (const std::exception&) {
+    // geometry-central's assertion texts name source files: not for users.
+    result.failure = "could not build the constraint region around this loop (degenerate intrinsic triangles)";
     return result;
   }
 

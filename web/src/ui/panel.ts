@@ -1,4 +1,4 @@
-/** The side panel: file, status, error box, mesh facts, notes, distance legend, timings, display options. */
+/** The side panel: file, status, error box, mesh facts, notes, timings, layer list (stage 1: ui/stages.ts). */
 import type { MeshFacts } from '../../../lib/core/types.ts';
 import { colormapGradient } from '../viewer/colormap.ts';
 
@@ -95,38 +95,38 @@ export class Panel {
     byTestId('warnings-section').hidden = notes.length === 0;
   }
 
-  setTimings(t: { parseMs?: number; inspectMs?: number; prepareMs?: number; distanceMs?: number | null }): void {
+  setTimings(t: { parseMs?: number; inspectMs?: number; prepareMs?: number }): void {
     const set = (id: string, ms: number | null | undefined) => {
       if (ms !== undefined) byTestId(id).textContent = ms === null ? '–' : formatMs(ms);
     };
     set('timing-parse', t.parseMs);
     set('timing-inspect', t.inspectMs);
     set('timing-prepare', t.prepareMs);
-    set('timing-distance', t.distanceMs);
-  }
-
-  setDistance(d: { source: number; max: number; spacing: number } | null): void {
-    byTestId('distance').hidden = !d;
-    byTestId('distance-empty').hidden = !!d;
-    if (!d) return;
-    byTestId('distance-source').textContent = String(d.source);
-    byTestId('distance-max').textContent = formatLength(d.max);
-    byTestId('distance-spacing').textContent = d.spacing > 0 ? formatLength(d.spacing) : '–';
-    byTestId('colorbar-max').textContent = formatLength(d.max);
   }
 
   /** Checkbox list of the viewer's layers. */
-  setLayers(layers: Array<{ name: string; label: string; visible: boolean }>, onToggle: (name: string, visible: boolean) => void): void {
+  setLayers(
+    layers: Array<{ name: string; label: string; visible: boolean; color?: string; dimmed?: boolean }>,
+    onToggle: (name: string, visible: boolean) => void,
+  ): void {
     $('#layers').replaceChildren(
-      ...layers.map(({ name, label, visible }) => {
+      ...layers.map(({ name, label, visible, color, dimmed }) => {
         const row = document.createElement('label');
         row.className = 'check';
+        row.classList.toggle('dimmed', !!dimmed);
         const box = document.createElement('input');
         box.type = 'checkbox';
         box.checked = visible;
         box.dataset.layer = name;
         box.addEventListener('change', () => onToggle(name, box.checked));
-        row.append(box, ` ${label}`);
+        row.append(box);
+        if (color) {
+          const chip = document.createElement('span');
+          chip.className = 'swatch';
+          chip.style.background = color;
+          row.append(chip);
+        }
+        row.append(label);
         return row;
       }),
     );

@@ -9,8 +9,14 @@ export interface Layer {
   /** Shown in the layer list. */
   readonly label: string;
   readonly object: THREE.Object3D;
+  /** Drawn muted (a layer of an earlier stage than the one shown). */
+  setDimmed?(dimmed: boolean): void;
   dispose(): void;
 }
+
+/** The grey that dimmed layers are mixed towards, and how far. */
+export const DIM_GREY = new THREE.Color(0x8f8b84);
+export const DIM_MIX = 0.62;
 
 const BASE_COLOR = 0xc4c0b8;
 
@@ -39,7 +45,13 @@ export class SurfaceLayer implements Layer {
     scalarMax: { value: 0 },
     isoSpacing: { value: 0 },
     isoStrength: { value: 0.75 },
+    scalarDim: { value: 0 },
+    regionCenter: { value: new THREE.Vector3() },
+    regionRadius: { value: 0 },
+    regionTint: { value: new THREE.Color(0x6fa8ff) },
+    regionStrength: { value: 0 },
   };
+  private grid: VertexGrid | null = null;
   private isolines = true;
   private field: ScalarField | null = null;
 
@@ -62,8 +74,8 @@ export class SurfaceLayer implements Layer {
     material.onBeforeCompile = (shader) => {
       Object.assign(shader.uniforms, this.uniforms);
       shader.vertexShader = shader.vertexShader
-        .replace('#include <common>', '#include <common>\nattribute float scalar;\nvarying float vScalar;')
-        .replace('#include <begin_vertex>', '#include <begin_vertex>\nvScalar = scalar;');
+        .replace('#include <common>', '#include <common>\nattribute float scalar;\nvarying float vScalar;\nvarying vec3 vWorld;')
+        .replace('#include <begin_vertex>', '#include <begin_vertex>\nvScalar = scalar;\nvWorld = (modelMatrix * vec4(transformed, 1.0)).xyz;');
       shader.fragmentShader = shader.fragmentShader
         .replace(
           '#include <common>',
@@ -72,7 +84,13 @@ uniform sampler2D scalarLut;
 uniform float scalarMax;
 uniform float isoSpacing;
 uniform float isoStrength;
-varying float vScalar;`,
+uniform float scalarDim;
+uniform vec3 regionCenter;
+uniform float regionRadius;
+uniform vec3 regionTint;
+uniform float regionStrength;
+varying float vScalar;
+varying vec3 vWorld;`,
         )
         .replace(
           '#include <color_fragment>',
@@ -87,7 +105,19 @@ if (scalarMax > 0.0 && vScalar >= 0.0) {
     float line = 1.0 - smoothstep(0.6 * w, 1.6 * w, d);   // about 1.5 px wide, anti-aliased
     c = mix(c, c * 0.12, line * isoStrength);
   }
+  // Dimmed: mostly a light grey carrying a hint of the colormap, so lines drawn on it stand out.
+  float lum = dot(c, vec3(0.2126, 0.7152, 0.0722));
+  c = mix(c, mix(diffuseColor.rgb, vec3(lum) * 0.45 + 0.42, 0.55), scalarDim * 0.7);
   diffuseColor.rgb = c;
+}
+if (regionRadius > 0.0 && regionStrength > 0.0) {
+  // A region given by a sphere (the constraint region): tinted inside, outlined where it meets the surface.
+  float r = length(vWorld - regionCenter) - regionRadius;
+  float w = max(fwidth(r), 1e-6);
+  float inside = 1.0 - smoothstep(-w, w, r);
+  float edge = 1.0 - smoothstep(1.0 * w, 2.5 * w, abs(r));
+  diffuseColor.rgb = mix(diffuseColor.rgb, diffuseColor.rgb * 0.55 + regionTint * 0.45, inside * regionStrength * 0.8);
+  diffuseColor.rgb = mix(diffuseColor.rgb, regionTint * 0.35, edge * regionStrength);
 }`,
         );
     };
@@ -106,6 +136,28 @@ if (scalarMax > 0.0 && vScalar >= 0.0) {
 
   vertexPosition(index: number, target = new THREE.Vector3()): THREE.Vector3 {
     return target.fromBufferAttribute(this.geometry.getAttribute('position') as THREE.BufferAttribute, index);
+  }
+
+  /** The vertex nearest to a point in space (for placing markers and lifting lines off the surface). */
+  nearestVertex(point: THREE.Vector3): number {
+    this.grid ??= new VertexGrid(this.geometry.getAttribute('position') as THREE.BufferAttribute);
+    return this.grid.nearest(point);
+  }
+
+  vertexNormal(index: number, target = new THREE.Vector3()): THREE.Vector3 {
+    return target.fromBufferAttribute(this.geometry.getAttribute('normal') as THREE.BufferAttribute, index);
+  }
+
+  /** Tints the part of the surface inside a sphere (strength 0..1; null: none). */
+  setRegion(sphere: { center: ArrayLike<number>; radius: number } | null, strength = 1): void {
+    this.uniforms.regionRadius.value = sphere ? sphere.radius : 0;
+    if (sphere) this.uniforms.regionCenter.value.set(sphere.center[0], sphere.center[1], sphere.center[2]);
+    this.uniforms.regionStrength.value = strength;
+  }
+
+  /** Mutes the colormap (when later stages are drawn on top of it). */
+  setDimmed(dimmed: boolean): void {
+    this.uniforms.scalarDim.value = dimmed ? 1 : 0;
   }
 
   setScalarField(field: ScalarField | null): void {
@@ -148,6 +200,7 @@ if (scalarMax > 0.0 && vScalar >= 0.0) {
 export class SpheresLayer implements Layer {
   readonly object: THREE.InstancedMesh;
   private static readonly sphere = new THREE.SphereGeometry(1, 32, 16);
+  private readonly color: THREE.Color;
 
   constructor(
     readonly label: string,
@@ -156,6 +209,7 @@ export class SpheresLayer implements Layer {
     color: THREE.ColorRepresentation = 0xffffff,
   ) {
     const count = centers.length / 3;
+    this.color = new THREE.Color(color);
     const material = new THREE.MeshStandardMaterial({ color, roughness: 0.35, metalness: 0, emissive: color, emissiveIntensity: 0.15 });
     this.object = new THREE.InstancedMesh(SpheresLayer.sphere, material, count);
     const m = new THREE.Matrix4();
@@ -165,6 +219,13 @@ export class SpheresLayer implements Layer {
       this.object.setMatrixAt(i, m);
     }
     this.object.computeBoundingSphere();
+  }
+
+  setDimmed(dimmed: boolean): void {
+    const material = this.object.material as THREE.MeshStandardMaterial;
+    material.color.copy(this.color);
+    if (dimmed) material.color.lerp(DIM_GREY, DIM_MIX);
+    material.emissive.copy(material.color);
   }
 
   dispose(): void {
@@ -212,5 +273,66 @@ export class PointsLayer implements Layer {
   dispose(): void {
     this.object.geometry.dispose();
     (this.object.material as THREE.Material).dispose();
+  }
+}
+
+/** Uniform grid over the vertices for nearest-vertex queries (ring search, exact). */
+class VertexGrid {
+  private readonly cells = new Map<number, number[]>();
+  private readonly min = new THREE.Vector3();
+  private readonly size: number;
+  private readonly dims: [number, number, number];
+
+  constructor(private readonly positions: THREE.BufferAttribute) {
+    const box = new THREE.Box3().setFromBufferAttribute(positions);
+    this.min.copy(box.min);
+    const extent = box.getSize(new THREE.Vector3());
+    const n = Math.max(1, positions.count);
+    // About two vertices per cell on a surface: cells of the mean spacing of n points on the box.
+    const area = 2 * (extent.x * extent.y + extent.y * extent.z + extent.z * extent.x) || 1;
+    this.size = Math.max(Math.sqrt(area / n) * 1.5, 1e-12);
+    this.dims = [extent.x, extent.y, extent.z].map((e) => Math.max(1, Math.ceil(e / this.size) + 1)) as [number, number, number];
+    for (let i = 0; i < n; i++) {
+      const key = this.key(this.cellOf(positions.getX(i), 0), this.cellOf(positions.getY(i), 1), this.cellOf(positions.getZ(i), 2));
+      const list = this.cells.get(key);
+      if (list) list.push(i);
+      else this.cells.set(key, [i]);
+    }
+  }
+
+  private cellOf(x: number, axis: 0 | 1 | 2): number {
+    const c = Math.floor((x - this.min.getComponent(axis)) / this.size);
+    return Math.min(this.dims[axis] - 1, Math.max(0, c));
+  }
+
+  private key(i: number, j: number, k: number): number {
+    return (k * this.dims[1] + j) * this.dims[0] + i;
+  }
+
+  nearest(p: THREE.Vector3): number {
+    const ci = this.cellOf(p.x, 0), cj = this.cellOf(p.y, 1), ck = this.cellOf(p.z, 2);
+    let best = -1;
+    let bestD = Infinity;
+    const maxRing = Math.max(...this.dims);
+    for (let r = 0; r <= maxRing; r++) {
+      for (let k = ck - r; k <= ck + r; k++) {
+        if (k < 0 || k >= this.dims[2]) continue;
+        for (let j = cj - r; j <= cj + r; j++) {
+          if (j < 0 || j >= this.dims[1]) continue;
+          for (let i = ci - r; i <= ci + r; i++) {
+            if (i < 0 || i >= this.dims[0]) continue;
+            if (Math.max(Math.abs(i - ci), Math.abs(j - cj), Math.abs(k - ck)) !== r) continue; // shell only
+            for (const v of this.cells.get(this.key(i, j, k)) ?? []) {
+              const dx = this.positions.getX(v) - p.x, dy = this.positions.getY(v) - p.y, dz = this.positions.getZ(v) - p.z;
+              const d = dx * dx + dy * dy + dz * dz;
+              if (d < bestD) [bestD, best] = [d, v];
+            }
+          }
+        }
+      }
+      // Every point outside the searched block is at least r cells (minus the offset in the cell) away.
+      if (best >= 0 && Math.sqrt(bestD) <= r * this.size) break;
+    }
+    return best;
   }
 }

@@ -121,22 +121,28 @@ export class Viewer {
 
   // -- camera -----------------------------------------------------------------------------------
 
-  /** Points the camera at the surface's bounding sphere from the front, slightly above. */
-  frame(): void {
+  /**
+   * Points the camera at the surface's bounding sphere from the front, slightly above; or, for close
+   * views (tests, screenshots), along `direction` (from the target towards the camera) at a sphere
+   * of `radius` around `center`.
+   */
+  frame(view: { direction?: THREE.Vector3Like; center?: THREE.Vector3Like; radius?: number } = {}): void {
     const sphere = this.surface?.boundingSphere;
     if (!sphere) return;
-    const radius = Math.max(sphere.radius, 1e-9);
+    const center = new THREE.Vector3().copy(view.center ?? sphere.center);
+    const radius = Math.max(view.radius ?? sphere.radius, 1e-9);
     const fov = THREE.MathUtils.degToRad(this.camera.fov);
     const fit = Math.min(fov, 2 * Math.atan(Math.tan(fov / 2) * this.camera.aspect)) / 2;
     const distance = (radius / Math.sin(fit)) * 1.08;
-    const direction = new THREE.Vector3(0.75, 0.35, -1).normalize();
-    this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
-    this.camera.near = distance / 100;
-    this.camera.far = distance * 100;
+    const direction = new THREE.Vector3().copy(view.direction ?? { x: 0.75, y: 0.35, z: -1 }).normalize();
+    this.camera.position.copy(center).addScaledVector(direction, distance);
+    const whole = (sphere.radius / Math.sin(fit)) * 1.08;
+    this.camera.near = Math.min(distance, whole) / 100;
+    this.camera.far = Math.max(distance, whole) * 100;
     this.camera.updateProjectionMatrix();
-    this.controls.target.copy(sphere.center);
-    this.controls.minDistance = radius * 0.05;
-    this.controls.maxDistance = distance * 20;
+    this.controls.target.copy(center);
+    this.controls.minDistance = sphere.radius * 0.05;
+    this.controls.maxDistance = whole * 20;
     this.controls.update();
     this.requestRender();
   }

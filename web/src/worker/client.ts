@@ -5,6 +5,7 @@
  * WorkerError of kind `crash`, the worker is replaced and the last successfully opened mesh is re-opened in
  * the new one from bytes kept here. Requests made meanwhile queue behind that re-open.
  */
+import type { Options } from '../../../lib/core/types.ts';
 import {
   type ErrorKind,
   type OpenedReply,
@@ -67,6 +68,11 @@ export class GeometryClient {
 
   distance(source: number): Promise<ReplyFor['distance']> {
     return this.request({ type: 'distance', source });
+  }
+
+  /** Stage 1 from `source` (null: the worker's last source) with options differing from the defaults. */
+  separator(source: number | null, options: Partial<Options> = {}): Promise<ReplyFor['separator']> {
+    return this.request({ type: 'separator', source, options });
   }
 
   /** Test hook: the worker fails as if the WASM core had aborted, or dies of an uncaught error. */

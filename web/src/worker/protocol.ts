@@ -5,7 +5,7 @@
  * or an `error` with the same id, and may send `progress` events for it before that. Large arrays
  * travel in transfer lists in both directions (see `transferables`).
  */
-import type { MeshFacts } from '../../../lib/core/types.ts';
+import type { MeshFacts, Options, Separator } from '../../../lib/core/types.ts';
 import type { MeshFormat } from '../../../lib/io/types.ts';
 
 // ---------------------------------------------------------------------------------------------
@@ -29,6 +29,19 @@ export interface DistanceRequest {
 }
 
 /**
+ * Stage 1 of CSCD-M (one separator, every intermediate kept) from a source vertex. Per-mesh data is
+ * cached in the core, so re-running the same source with other options is cheap.
+ */
+export interface SeparatorRequest {
+  type: 'separator';
+  id: number;
+  /** Source vertex; null re-runs the worker's last source (an options change). */
+  source: number | null;
+  /** Options that differ from `defaultOptions`. */
+  options: Partial<Options>;
+}
+
+/**
  * Test hook: `abort` fails the request as a WASM abort would (an error reply of kind `crash`);
  * `uncaught` throws outside any request, which the page sees as the Worker's `error` event.
  */
@@ -38,7 +51,7 @@ export interface CrashRequest {
   how: 'abort' | 'uncaught';
 }
 
-export type WorkerRequest = OpenRequest | DistanceRequest | CrashRequest;
+export type WorkerRequest = OpenRequest | DistanceRequest | SeparatorRequest | CrashRequest;
 
 // ---------------------------------------------------------------------------------------------
 // Worker -> page
@@ -75,6 +88,32 @@ export interface DistanceReply {
   timings: { distanceMs: number };
 }
 
+/** A Separator as it travels to the page: float32 arrays for the GPU, every buffer transferred. */
+export interface SeparatorData extends Omit<Separator, 'distance' | 'cutLocus' | 'paths' | 'approxLoop' | 'loop'> {
+  /** Geodesic distance per vertex; non-finite values (unreachable vertices) are kept as is. */
+  distance: Float32Array;
+  cutLocus: Omit<Separator['cutLocus'], 'points' | 'angleDeviation' | 'laplacian'> & {
+    points: Float32Array;
+    angleDeviation: Float32Array;
+    laplacian: Float32Array;
+  };
+  paths: [Float32Array, Float32Array];
+  approxLoop: Float32Array;
+  loop: Float32Array;
+}
+
+export interface SeparatorReply {
+  type: 'separator';
+  id: number;
+  separator: SeparatorData;
+  /** The options the run used (defaults filled in). */
+  options: Options;
+  /** Largest finite distance. */
+  distanceMax: number;
+  /** Wall time of the whole call in the worker (the core's own per-stage times are in `separator.timings`). */
+  timings: { separatorMs: number };
+}
+
 /**
  * `format`: the file is not a readable mesh; `core`: the core refused the input or computation;
  * both leave the worker usable. `crash`: the WASM core aborted or the worker hit an unexpected
@@ -89,7 +128,7 @@ export interface ErrorReply {
   message: string;
 }
 
-export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'distance';
+export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'distance' | 'separator';
 
 /** Intermediate news about a request; `fraction` in [0, 1] when the stage can measure itself. */
 export interface ProgressEvent {
@@ -100,13 +139,14 @@ export interface ProgressEvent {
   fraction?: number;
 }
 
-export type WorkerReply = OpenedReply | DistanceReply | ErrorReply;
+export type WorkerReply = OpenedReply | DistanceReply | SeparatorReply | ErrorReply;
 export type WorkerMessage = WorkerReply | ProgressEvent;
 
 /** The reply type that answers each request type. */
 export interface ReplyFor {
   open: OpenedReply;
   distance: DistanceReply;
+  separator: SeparatorReply;
   crash: never;
 }
 

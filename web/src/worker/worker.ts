@@ -4,7 +4,8 @@
  * page never blocks. Holds at most one open mesh (its prefactored Surface).
  */
 import { createCore } from '../../../lib/core/index.ts';
-import type { Core, Surface } from '../../../lib/core/types.ts';
+import { defaultOptions } from '../../../lib/core/options.ts';
+import type { Core, Options, Separator, Surface } from '../../../lib/core/types.ts';
 import { parseMesh } from '../../../lib/io/index.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
 import {
@@ -13,6 +14,8 @@ import {
   type ErrorKind,
   type OpenRequest,
   type ProgressStage,
+  type SeparatorData,
+  type SeparatorRequest,
   type WorkerMessage,
   type WorkerRequest,
 } from './protocol.ts';
@@ -32,6 +35,8 @@ interface OpenMesh {
   vertexCount: number;
   surface: Surface | null;
   surfaceError: string | null;
+  /** The source of the last separator request, for re-runs with other options. */
+  lastSource: number | null;
 }
 let current: OpenMesh | null = null;
 
@@ -103,7 +108,7 @@ async function open(request: OpenRequest): Promise<void> {
     surfaceError = message;
   }
   const prepareMs = performance.now() - t;
-  current = { vertexCount: facts.vertices, surface, surfaceError };
+  current = { vertexCount: facts.vertices, surface, surfaceError, lastSource: null };
 
   const positions = request.withArrays ? new Float32Array(mesh.positions) : new Float32Array(0);
   const triangles = request.withArrays ? mesh.triangles : new Uint32Array(0);
@@ -124,8 +129,8 @@ async function open(request: OpenRequest): Promise<void> {
   );
 }
 
-function distance(request: DistanceRequest): void {
-  const { id, source } = request;
+/** The open mesh's surface and a checked source vertex. */
+function surfaceFor(source: number): { mesh: OpenMesh; surface: Surface } {
   if (!current) throw new UserError('core', 'No mesh is open.');
   if (!current.surface) {
     throw new UserError('core', `Geodesic distance is not available on this mesh: ${current.surfaceError}`);
@@ -133,17 +138,70 @@ function distance(request: DistanceRequest): void {
   if (!Number.isInteger(source) || source < 0 || source >= current.vertexCount) {
     throw new UserError('core', `Source vertex ${source} is not a vertex of this mesh.`);
   }
-  progress(id, 'distance', 'computing distance…');
-  const t = performance.now();
-  const d64 = current.surface.distanceFromVertex(source);
-  const distanceMs = performance.now() - t;
-  const distance = new Float32Array(d64);
+  return { mesh: current, surface: current.surface };
+}
+
+function finiteMax(values: ArrayLike<number>): number {
   let max = 0;
-  for (let i = 0; i < distance.length; i++) {
-    const d = distance[i];
+  for (let i = 0; i < values.length; i++) {
+    const d = values[i];
     if (d > max && Number.isFinite(d)) max = d;
   }
+  return max;
+}
+
+function distance(request: DistanceRequest): void {
+  const { id, source } = request;
+  const { surface } = surfaceFor(source);
+  progress(id, 'distance', 'computing distance…');
+  const t = performance.now();
+  const d64 = surface.distanceFromVertex(source);
+  const distanceMs = performance.now() - t;
+  const distance = new Float32Array(d64);
+  const max = finiteMax(distance);
   post({ type: 'distance', id, source, distance, max, timings: { distanceMs } }, transferables(distance));
+}
+
+const f32 = (a: ArrayLike<number> | null | undefined) => Float32Array.from(a ?? []);
+
+/** Float32 copies of every array of a Separator (fresh buffers, safe to transfer). */
+function toWire(s: Separator): SeparatorData {
+  const c = s.cutLocus;
+  return {
+    ...s,
+    distance: f32(s.distance),
+    cutLocus: {
+      ...c,
+      vertices: Uint32Array.from(c.vertices ?? []),
+      edges: Uint32Array.from(c.edges ?? []),
+      points: f32(c.points),
+      angleDeviation: f32(c.angleDeviation),
+      laplacian: f32(c.laplacian),
+    },
+    paths: [f32(s.paths?.[0]), f32(s.paths?.[1])],
+    approxLoop: f32(s.approxLoop),
+    loop: f32(s.loop),
+    timings: { ...s.timings },
+  };
+}
+
+function separator(request: SeparatorRequest): void {
+  const { id } = request;
+  const source = request.source ?? current?.lastSource;
+  if (source == null) throw new UserError('core', 'No source vertex has been picked yet.');
+  const { mesh, surface } = surfaceFor(source);
+  const options: Options = { ...defaultOptions, ...request.options };
+  progress(id, 'separator', 'computing the separator…');
+  const t = performance.now();
+  const result = surface.separator(source, options);
+  const separatorMs = performance.now() - t;
+  mesh.lastSource = source;
+  const data = toWire(result);
+  const c = data.cutLocus;
+  post(
+    { type: 'separator', id, separator: data, options, distanceMax: finiteMax(data.distance), timings: { separatorMs } },
+    transferables(data.distance, c.vertices, c.edges, c.points, c.angleDeviation, c.laplacian, ...data.paths, data.approxLoop, data.loop),
+  );
 }
 
 async function handle(request: WorkerRequest): Promise<void> {
@@ -153,6 +211,8 @@ async function handle(request: WorkerRequest): Promise<void> {
         return await open(request);
       case 'distance':
         return distance(request);
+      case 'separator':
+        return separator(request);
       case 'crash':
         if (request.how === 'uncaught') {
           setTimeout(() => {

@@ -1,0 +1,69 @@
+/** The viewer layers of one stage-1 run: cut locus, target, paths, loops, constraint sphere. */
+import * as THREE from 'three';
+import type { SeparatorData } from '../worker/protocol.ts';
+import { COLORS } from '../ui/stages.ts';
+import { SpheresLayer, type Layer, type SurfaceLayer } from './layers.ts';
+import { GlassSphereLayer, TubesLayer, graphSegments, liftOffSurface, polylineSegments } from './tubes.ts';
+
+export interface NamedLayer {
+  name: string;
+  layer: Layer;
+  color: string;
+}
+
+/** Tube radii as fractions of the mesh's bounding-sphere radius. */
+const RADIUS = { cutLocus: 0.0042, path: 0.0058, approxLoop: 0.0072, loop: 0.0105, target: 0.03 };
+
+/** Every layer the run has data for (a failed run has fewer). */
+export function separatorLayers(s: SeparatorData, surface: SurfaceLayer): NamedLayer[] {
+  const R = surface.boundingSphere.radius;
+  const out: NamedLayer[] = [];
+
+  const c = s.cutLocus;
+  if (c.vertices.length > 0) {
+    // Nodes are mesh vertices: lift each along its own vertex normal.
+    const r = RADIUS.cutLocus * R;
+    const lifted = Float32Array.from(c.points);
+    const p = new THREE.Vector3();
+    const n = new THREE.Vector3();
+    for (let i = 0; i < c.vertices.length; i++) {
+      const v = c.vertices[i];
+      if (v >= surface.vertexCount) continue;
+      p.fromArray(lifted, 3 * i).addScaledVector(surface.vertexNormal(v, n), 0.6 * r).toArray(lifted, 3 * i);
+    }
+    out.push({
+      name: 'cut-locus',
+      layer: new TubesLayer('Cut locus', graphSegments(lifted, c.edges), lifted, { color: COLORS.cutLocus, radius: r, jointRadius: r * 1.15 }),
+      color: COLORS.cutLocus,
+    });
+  }
+
+  if (s.targetPoint) {
+    const r = RADIUS.target * R;
+    const p = new THREE.Vector3(...s.targetPoint);
+    const v = surface.nearestVertex(p);
+    if (v >= 0) p.addScaledVector(surface.vertexNormal(v), 0.35 * r);
+    out.push({ name: 'target', layer: new SpheresLayer('Target', p.toArray(), r, COLORS.target), color: COLORS.target });
+  }
+
+  const tube = (name: string, label: string, points: Float32Array, closed: boolean, radius: number, color: string) => {
+    if (points.length < 6) return;
+    const r = radius * R;
+    const lifted = liftOffSurface(points, surface, 0.6 * r);
+    out.push({ name, layer: new TubesLayer(label, polylineSegments(lifted, closed), lifted, { color, radius: r }), color });
+  };
+  tube('path-1', 'Path 1', s.paths[0], false, RADIUS.path, COLORS.path1);
+  tube('path-2', 'Path 2', s.paths[1], false, RADIUS.path, COLORS.path2);
+  tube('approx-loop', 'Approximate loop', s.approxLoop, true, RADIUS.approxLoop, COLORS.approxLoop);
+
+  if (s.sphere) {
+    out.push({
+      name: 'sphere',
+      layer: new GlassSphereLayer('Constraint sphere', s.sphere.center, s.sphere.radius, COLORS.sphere),
+      color: COLORS.sphere,
+    });
+  }
+
+  tube('loop', 'Loop', s.loop, true, RADIUS.loop, COLORS.loop);
+  return out;
+}

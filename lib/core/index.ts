@@ -1,13 +1,16 @@
 // The CSCD core for TypeScript callers (CLI, worker, tests): a thin layer over the embind module that
 // turns its error strings into CoreError and frees WASM objects through dispose().
-import createCscdModule, { type CscdModule, type SurfaceHandle } from '../../build/wasm/cscd.js';
+import createCscdModule, { type CscdModule, type PipelineHandle, type SurfaceHandle } from '../../build/wasm/cscd.js';
 import {
   CoreError,
   type Core,
   type MeshArrays,
   type MeshFacts,
   type Options,
+  type Pipeline,
+  type PipelineProgress,
   type Separator,
+  type Skeleton,
   type Surface,
   type SurfacePoint,
 } from './types.ts';
@@ -20,11 +23,40 @@ function unwrap<T>(result: T | string): T {
   return result;
 }
 
+class WasmPipeline implements Pipeline {
+  private handle: PipelineHandle | null;
+
+  constructor(handle: PipelineHandle) {
+    this.handle = handle;
+  }
+
+  step(sources: number): PipelineProgress {
+    return unwrap(this.live().step(sources)) as PipelineProgress;
+  }
+
+  finish(): Skeleton {
+    return unwrap(this.live().finish()) as Skeleton;
+  }
+
+  dispose(): void {
+    this.handle?.delete();
+    this.handle = null;
+  }
+
+  private live(): PipelineHandle {
+    if (!this.handle) throw new CoreError('this pipeline has been disposed');
+    return this.handle;
+  }
+}
+
 class WasmSurface implements Surface {
   readonly facts: MeshFacts;
   private handle: SurfaceHandle | null;
 
-  constructor(handle: SurfaceHandle) {
+  constructor(
+    handle: SurfaceHandle,
+    private readonly module: CscdModule,
+  ) {
     this.handle = handle;
     this.facts = handle.facts() as MeshFacts;
   }
@@ -39,6 +71,25 @@ class WasmSurface implements Surface {
 
   separator(source: number, options: Partial<Options> = {}): Separator {
     return unwrap(this.live().separator(source, options)) as Separator;
+  }
+
+  pipeline(options: Partial<Options> = {}): Pipeline {
+    const handle = new this.module.Pipeline(this.live(), options);
+    const error = handle.error();
+    if (error) {
+      handle.delete();
+      throw new CoreError(error);
+    }
+    return new WasmPipeline(handle);
+  }
+
+  skeleton(options: Partial<Options> = {}): Skeleton {
+    const pipeline = this.pipeline(options);
+    try {
+      return pipeline.finish();
+    } finally {
+      pipeline.dispose();
+    }
   }
 
   distanceFromPoints(points: SurfacePoint[]): Float64Array {
@@ -72,7 +123,7 @@ class WasmCore implements Core {
       handle.delete();
       throw new CoreError(error);
     }
-    return new WasmSurface(handle);
+    return new WasmSurface(handle, this.module);
   }
 }
 

@@ -8,6 +8,8 @@ export const defaultOptions: Readonly<Options> = Object.freeze({
   angleThreshold: 1.75,
   laplacianThreshold: 0.2,
   pruneDepth: 3,
+  n: 'auto',
+  pruneLengthFactor: 3,
 });
 
 /** Accepted ranges of the numeric options; the core checks the same (toOptions in bindings.cpp). */
@@ -16,4 +18,6 @@ export const optionRanges = Object.freeze({
   angleThreshold: [0, Math.PI],
   laplacianThreshold: [0, 1e6],
   pruneDepth: [0, 1000],
+  n: [1, 100000],
+  pruneLengthFactor: [0, 1000],
 } as const);

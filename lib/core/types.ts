@@ -55,6 +55,10 @@ export interface Options {
   laplacianThreshold: number;
   /** Cut locus: leaf branches with fewer edges than this are pruned. */
   pruneDepth: number;
+  /** Number of sources (separators tried), or 'auto': sample until new separators stop adding coverage. */
+  n: number | 'auto';
+  /** Prune: loops shorter than this many mean edge lengths enclose no feature (paper Sec. 4.2.2). */
+  pruneLengthFactor: number;
 }
 
 /** Why stage 1 produced no separator for a source ('ok' when it did). */
@@ -108,6 +112,61 @@ export interface Separator {
   timings: Record<string, number>;
 }
 
+/** What became of a candidate separator in stage 2. */
+export type CandidateFate = 'packed' | 'overlapping' | 'short' | 'outside' | 'failed';
+
+/** The curve skeleton and what led to it (paper Sec. 4.2, Alg. 1). */
+export interface Skeleton {
+  /** Node positions (xyz) and radii: the mean distance from the node to its region's surface. */
+  nodes: Float64Array;
+  radii: Float64Array;
+  /** Pairs of node indices. */
+  edges: Uint32Array;
+  /** Skeleton node of every input vertex (the region it belongs to; branch nodes own no vertices). */
+  vertexToNode: Uint32Array;
+  /** Every candidate of stage 1: its source, loop, score and fate. */
+  candidates: {
+    sources: Uint32Array;
+    loops: Polyline[];
+    scores: Float64Array;
+    fates: CandidateFate[];
+  };
+  /** The packed separators' indices into candidates; separator i owns region (node) i. */
+  packed: Uint32Array;
+  stats: {
+    /** Sources tried (N; the one chosen in auto mode). */
+    n: number;
+    candidates: number;
+    pruned: number;
+    packed: number;
+    /** Independent cycles of the skeleton graph (E - V + components). */
+    cycles: number;
+    seed: number;
+    /** Milliseconds per stage. */
+    timings: Record<string, number>;
+  };
+}
+
+/** Progress of a pipeline run: sources done out of the total (the total may shrink in auto mode). */
+export interface PipelineProgress {
+  done: number;
+  total: number;
+  /** True once no more sources will be tried. */
+  finished: boolean;
+  /** The loops found by this step's sources (empty polylines for failed sources), for progressive display. */
+  newLoops: Polyline[];
+}
+
+/**
+ * The whole CSCD-M pipeline as a resumable job: `step` runs a few sources of stage 1 (so callers can
+ * report progress and cancel between steps), `finish` runs stage 2 and returns the skeleton.
+ */
+export interface Pipeline {
+  step(sources: number): PipelineProgress;
+  finish(): Skeleton;
+  dispose(): void;
+}
+
 /** Per-mesh state kept in the core: prefactored geodesic solver on the intrinsic Delaunay triangulation. */
 export interface Surface {
   readonly facts: MeshFacts;
@@ -119,6 +178,10 @@ export interface Surface {
   distanceFromPoints(points: SurfacePoint[]): Float64Array;
   /** Stage 1 for one source vertex; per-mesh data is reused, so repeated calls are cheap. */
   separator(source: number, options?: Partial<Options>): Separator;
+  /** The whole pipeline, as a resumable job (see Pipeline). */
+  pipeline(options?: Partial<Options>): Pipeline;
+  /** The whole pipeline in one call. */
+  skeleton(options?: Partial<Options>): Skeleton;
   /** Frees the WASM-side object; the Surface must not be used afterwards. */
   dispose(): void;
 }

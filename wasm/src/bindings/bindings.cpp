@@ -1,6 +1,7 @@
 // embind surface of the core. Arrays cross as typed arrays (one copy in, one copy out: JS owns every
 // result, so heap growth cannot invalidate it). Nothing here throws into JS: a call that fails returns
 // the error message as a string, which lib/core turns into a CoreError.
+#include "mesh/realization.h"
 #include "mesh/separator.h"
 #include "mesh/surface.h"
 
@@ -75,6 +76,12 @@ val toVal(const MeshFacts& f) {
   return o;
 }
 
+val toVal(const std::vector<std::pair<std::string, double>>& timings) {
+  val o = val::object();
+  for (const auto& [stage, ms] : timings) o.set(stage, ms);
+  return o;
+}
+
 Options toOptions(const val& given) {
   Options options;
   if (given.isUndefined() || given.isNull()) return options;
@@ -100,6 +107,16 @@ Options toOptions(const val& given) {
   options.angleThreshold = number("angleThreshold", 0, M_PI, options.angleThreshold);
   options.laplacianThreshold = number("laplacianThreshold", 0, 1e6, options.laplacianThreshold);
   options.pruneDepth = int(number("pruneDepth", 0, 1000, options.pruneDepth));
+  val n = given["n"];
+  if (!n.isUndefined()) {
+    if (n.isString()) {
+      if (n.as<std::string>() != "auto") throw InputError("option n must be a number of sources or 'auto'");
+      options.n = 0;
+    } else {
+      options.n = int(number("n", 1, 100000, options.n));
+    }
+  }
+  options.pruneLengthFactor = number("pruneLengthFactor", 0, 1000, options.pruneLengthFactor);
   return options;
 }
 
@@ -150,9 +167,59 @@ val toVal(const SeparatorResult& r, Surface& surface) {
   o.set("areas", areas);
   o.set("score", r.score);
   o.set("centroidInside", r.centroidInside);
-  val timings = val::object();
-  for (const auto& [stage, ms] : r.timings) timings.set(stage, ms);
-  o.set("timings", timings);
+  o.set("timings", toVal(r.timings));
+  return o;
+}
+
+const char* fateName(Fate fate) {
+  switch (fate) {
+  case Fate::Packed: return "packed";
+  case Fate::Overlapping: return "overlapping";
+  case Fate::Short: return "short";
+  case Fate::Outside: return "outside";
+  case Fate::Failed: return "failed";
+  }
+  return "failed";
+}
+
+val toVal(const Skeleton& skeleton, const Options& options) {
+  const SkeletonGraph& g = skeleton.graph;
+  val o = val::object();
+  o.set("nodes", toFloat64Array(g.nodes));
+  o.set("radii", toFloat64Array(g.radii));
+  std::vector<uint32_t> edges;
+  for (const auto& e : g.edges) edges.insert(edges.end(), {uint32_t(e[0]), uint32_t(e[1])});
+  o.set("edges", toTypedArray("Uint32Array", edges));
+  o.set("vertexToNode", toTypedArray("Uint32Array", skeleton.vertexToNode));
+
+  std::vector<uint32_t> sources;
+  std::vector<double> scores;
+  val loops = val::array(), fates = val::array();
+  for (size_t i = 0; i < skeleton.candidates.size(); i++) {
+    const Candidate& c = skeleton.candidates[i];
+    sources.push_back(uint32_t(c.source));
+    scores.push_back(c.score);
+    loops.call<void>("push", toFloat64Array(c.loop));
+    fates.call<void>("push", std::string(fateName(skeleton.fates[i])));
+  }
+  val candidates = val::object();
+  candidates.set("sources", toTypedArray("Uint32Array", sources));
+  candidates.set("loops", loops);
+  candidates.set("scores", toFloat64Array(scores));
+  candidates.set("fates", fates);
+  o.set("candidates", candidates);
+  std::vector<uint32_t> packed(skeleton.packed.begin(), skeleton.packed.end());
+  o.set("packed", toTypedArray("Uint32Array", packed));
+
+  val stats = val::object();
+  stats.set("n", skeleton.candidates.size());
+  stats.set("candidates", skeleton.candidates.size());
+  stats.set("pruned", skeleton.pruned);
+  stats.set("packed", skeleton.packed.size());
+  stats.set("cycles", g.cycleRank());
+  stats.set("seed", options.seed);
+  stats.set("timings", toVal(skeleton.timings));
+  o.set("stats", stats);
   return o;
 }
 
@@ -237,6 +304,51 @@ private:
 
   std::unique_ptr<Surface> surface;
   std::string failure;
+  friend class PipelineBinding;
+};
+
+// The whole pipeline as a resumable job over a surface (which must outlive it).
+class PipelineBinding {
+public:
+  PipelineBinding(SurfaceBinding& surface, const val& options) {
+    try {
+      if (!surface.surface) throw InputError("the surface could not be opened");
+      settings = toOptions(options);
+      realization = std::make_unique<MeshRealization>(*surface.surface, settings);
+      pipeline = std::make_unique<MeshPipeline>(*realization, settings);
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+  }
+
+  std::string error() const { return failure; }
+
+  val step(double count) {
+    return reportingErrors([&] {
+      size_t before = loopsReported;
+      Progress progress = pipeline->step(size_t(std::max(1.0, count)));
+      val newLoops = val::array();
+      for (size_t i = before; i < progress.done; i++) newLoops.call<void>("push", toFloat64Array(realization->loop(i)));
+      loopsReported = progress.done;
+      val o = val::object();
+      o.set("done", progress.done);
+      o.set("total", progress.total);
+      o.set("finished", progress.finished);
+      o.set("newLoops", newLoops);
+      return o;
+    });
+  }
+
+  val finish() {
+    return reportingErrors([&] { return toVal(pipeline->finish(), settings); });
+  }
+
+private:
+  Options settings;
+  std::unique_ptr<MeshRealization> realization;
+  std::unique_ptr<MeshPipeline> pipeline;
+  size_t loopsReported = 0;
+  std::string failure;
 };
 
 } // namespace
@@ -253,4 +365,9 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("exactDistanceFromVertex", &SurfaceBinding::exactDistanceFromVertex)
       .function("separator", &SurfaceBinding::separator)
       .function("distanceFromPoints", &SurfaceBinding::distanceFromPoints);
+  class_<PipelineBinding>("Pipeline")
+      .constructor<SurfaceBinding&, const val&>()
+      .function("error", &PipelineBinding::error)
+      .function("step", &PipelineBinding::step)
+      .function("finish", &PipelineBinding::finish);
 }

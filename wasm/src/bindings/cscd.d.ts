@@ -10,9 +10,17 @@ export interface SurfaceHandle {
   delete(): void;
 }
 
+export interface PipelineHandle {
+  error(): string;
+  step(sources: number): object | string;
+  finish(): object | string;
+  delete(): void;
+}
+
 export interface CscdModule {
   inspect(positions: Float64Array | Float32Array, triangles: Uint32Array): unknown;
   Surface: new (positions: Float64Array | Float32Array, triangles: Uint32Array) => SurfaceHandle;
+  Pipeline: new (surface: SurfaceHandle, options: object) => PipelineHandle;
 }
 
 export interface CscdModuleOptions {

@@ -16,6 +16,8 @@ struct Options {
   double angleThreshold = 1.75;              // cut locus: min turn of the distance gradient, radians
   double laplacianThreshold = 0.2;           // cut locus: min -(mean edge length) x Laplacian of the distance
   int pruneDepth = 3;                        // cut locus: leaf branches shorter than this (edges) are pruned
+  int n = 0;                                 // sources to sample; 0 = auto (until coverage stops growing)
+  double pruneLengthFactor = 3;              // loops shorter than this many mean edge lengths are pruned
 };
 
 } // namespace cscd

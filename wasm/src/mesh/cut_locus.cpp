@@ -1,7 +1,7 @@
 #include "mesh/cut_locus.h"
 
 #include "mesh/mesh_arrays.h"
-#include "mesh/union_find.h"
+#include "cscd/union_find.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "mesh/mesh_check.h"
 
-#include "mesh/union_find.h"
+#include "cscd/union_find.h"
 
 #include <algorithm>
 #include <cmath>

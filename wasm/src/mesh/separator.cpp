@@ -140,6 +140,7 @@ SeparatorResult computeSeparator(Surface& surface, size_t source, const Options&
   if (*status) return fail(result, status, result.message);
 
   for (const SurfacePoint& p : shortened.loop) result.loop.push_back(p.interpolate(surface.geometry().vertexPositions));
+  result.loopPoints = std::move(shortened.loop);
   result.length = shortened.length;
   result.areas = shortened.areas;
   result.score = separatorScore(result.areas, result.length);

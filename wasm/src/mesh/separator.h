@@ -25,6 +25,7 @@ struct SeparatorResult {
   int attempts = 0; // targets tried (the nearest first; farther ones when a loop was degenerate)
   TracedLoop traced;
   std::vector<geometrycentral::Vector3> firstPath, secondPath, approxLoop, loop; // polylines on the surface
+  std::vector<geometrycentral::surface::SurfacePoint> loopPoints;                 // the loop on the input mesh
   std::optional<Sphere> sphere;
   double approxLength = 0;
   double length = 0;

@@ -1,6 +1,6 @@
 #include "mesh/shorten.h"
 
-#include "mesh/union_find.h"
+#include "cscd/union_find.h"
 
 #include "geometrycentral/surface/edge_length_geometry.h"
 #include "geometrycentral/surface/flip_geodesics.h"

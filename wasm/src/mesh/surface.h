@@ -22,6 +22,8 @@ public:
   const MeshFacts& facts() const { return check.facts; }
   size_t vertexCount() const { return check.facts.vertices; }
   size_t faceCount() const { return check.facts.faces; }
+  // Connected component of every vertex.
+  const std::vector<int>& vertexComponent() const { return check.vertexComponent; }
 
   geometrycentral::surface::ManifoldSurfaceMesh& mesh() { return *inputMesh; }
   geometrycentral::surface::VertexPositionGeometry& geometry() { return *inputGeometry; }

@@ -1,0 +1,175 @@
+// The whole CSCD-M pipeline (stage 1 over many sources, then stage 2) on the shared meshes: issue 4.
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { beforeAll, describe, expect, it } from 'vitest';
+import { loadCoreNode, type Core, type MeshArrays, type Skeleton, type Surface } from '../../lib/core/node.ts';
+import { readMesh } from './support/meshes.ts';
+import { sharedData, sharedMesh } from '../paths.ts';
+
+let core: Core;
+beforeAll(async () => {
+  core = await loadCoreNode();
+});
+
+/** Closed, connected meshes of the shared set with their genus (MANIFEST.md). */
+function closedConnectedMeshes(): { file: string; genus: number }[] {
+  return readFileSync(path.join(sharedData, 'MANIFEST.md'), 'utf8')
+    .split('\n')
+    .filter((line) => line.startsWith('| `meshes/'))
+    .map((line) => line.split('|').map((cell) => cell.trim()))
+    .filter((c) => c[4] === 'yes' && c[8] === '1' && c[9] === '0')
+    .map((c) => ({ file: c[1].replaceAll('`', '').replace('meshes/', ''), genus: Number(c[6]) }));
+}
+
+const point = (flat: ArrayLike<number>, i: number) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]];
+const distance3 = (a: number[], b: number[]) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+
+function components(nodeCount: number, edges: Uint32Array): number {
+  const parent = Array.from({ length: nodeCount }, (_, i) => i);
+  const find = (x: number): number => (parent[x] === x ? x : (parent[x] = find(parent[x])));
+  for (let i = 0; i < edges.length; i += 2) parent[find(edges[i])] = find(edges[i + 1]);
+  return parent.filter((p, i) => find(i) === i).length;
+}
+
+function leaves(skeleton: Skeleton): number[] {
+  const degree = new Array(skeleton.radii.length).fill(0);
+  for (const v of skeleton.edges) degree[v]++;
+  return degree.flatMap((d, i) => (d === 1 ? [i] : []));
+}
+
+/** Generalised winding number of a closed mesh around p (1 inside, 0 outside). */
+function windingNumber(mesh: MeshArrays, p: number[]): number {
+  let total = 0;
+  for (let f = 0; f < mesh.triangles.length / 3; f++) {
+    const [a, b, c] = [0, 1, 2].map((k) => point(mesh.positions, mesh.triangles[3 * f + k]).map((x, j) => x - p[j]));
+    const [la, lb, lc] = [a, b, c].map((v) => Math.hypot(v[0], v[1], v[2]));
+    const dot = (u: number[], v: number[]) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    const det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
+    total += 2 * Math.atan2(det, la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb);
+  }
+  return total / (4 * Math.PI);
+}
+
+/** `count` limb tips by farthest-point sampling of the geodesic distance. */
+function extremities(surface: Surface, count: number): number[] {
+  const nearest = new Float64Array(surface.facts.vertices).fill(Infinity);
+  const d0 = surface.distanceFromVertex(0);
+  let tip = d0.indexOf(Math.max(...d0));
+  const tips: number[] = [];
+  while (tips.length < count) {
+    tips.push(tip);
+    const d = surface.distanceFromVertex(tip);
+    for (let v = 0; v < d.length; v++) nearest[v] = Math.min(nearest[v], d[v]);
+    tip = nearest.indexOf(Math.max(...nearest));
+  }
+  return tips;
+}
+
+/** The nearest leaf of the skeleton to every tip must be a different node, within `reach` of it. */
+function expectOneLeafPerTip(mesh: MeshArrays, skeleton: Skeleton, tips: number[], reach: number) {
+  const leafNodes = leaves(skeleton);
+  const nearest = tips.map((tip) => {
+    const at = point(mesh.positions, tip);
+    const best = leafNodes.reduce((a, b) => (distance3(point(skeleton.nodes, a), at) <= distance3(point(skeleton.nodes, b), at) ? a : b));
+    expect(distance3(point(skeleton.nodes, best), at)).toBeLessThan(reach);
+    return best;
+  });
+  expect(new Set(nearest).size).toBe(tips.length);
+}
+
+describe('skeleton topology', () => {
+  const meshes = closedConnectedMeshes();
+  it('covers the closed connected meshes of the shared set', () => expect(meshes.length).toBeGreaterThanOrEqual(20));
+  for (const { file, genus } of meshes) {
+    it(`of ${file} is connected with cycle rank ${genus} (the genus)`, () => {
+      const mesh = readMesh(sharedMesh(file));
+      const surface = core.openSurface(mesh);
+      const skeleton = surface.skeleton();
+      surface.dispose();
+      const nodeCount = skeleton.radii.length;
+      expect(components(nodeCount, skeleton.edges)).toBe(1);
+      expect(skeleton.stats.cycles).toBe(genus);
+      expect(skeleton.edges.length / 2 - nodeCount + 1).toBe(genus);
+      // Centring: the nodes lie inside the shape.
+      let inside = 0;
+      for (let i = 0; i < nodeCount; i++) if (windingNumber(mesh, point(skeleton.nodes, i)) > 0.5) inside++;
+      expect(inside / nodeCount).toBeGreaterThanOrEqual(0.98);
+    });
+  }
+});
+
+describe('skeleton shape and bookkeeping', () => {
+  it('has a leaf in each finger and the wrist of the hand', () => {
+    const mesh = readMesh(sharedMesh('hand.ply'));
+    const surface = core.openSurface(mesh);
+    const skeleton = surface.skeleton();
+    // The six extremities of a hand: five fingertips and the wrist.
+    expectOneLeafPerTip(mesh, skeleton, extremities(surface, 6), 0.15 * surface.facts.bboxDiagonal);
+    surface.dispose();
+  });
+
+  it('has leaves in the hands, feet, head and tail of the armadillo', () => {
+    const mesh = readMesh(sharedMesh('armadillo.ply'));
+    const surface = core.openSurface(mesh);
+    const skeleton = surface.skeleton();
+    expectOneLeafPerTip(mesh, skeleton, extremities(surface, 6), 0.15 * surface.facts.bboxDiagonal);
+    surface.dispose();
+  });
+
+  it('maps every vertex to a node, with connected regions, deterministically for a seed', () => {
+    const mesh = readMesh(sharedMesh('fertility_9k.ply'));
+    const surface = core.openSurface(mesh);
+    const skeleton = surface.skeleton({ seed: 3 });
+    const again = surface.skeleton({ seed: 3 });
+    const other = surface.skeleton({ seed: 4 });
+    surface.dispose();
+    const json = (s: Skeleton) =>
+      JSON.stringify(s, (key, value) => (ArrayBuffer.isView(value) ? Array.from(value as Float64Array) : key === 'timings' ? undefined : value));
+    expect(json(again)).toBe(json(skeleton));
+    expect(json(other)).not.toBe(json(skeleton));
+    expect(skeleton.stats.seed).toBe(3);
+
+    const nV = mesh.positions.length / 3;
+    expect(skeleton.vertexToNode.length).toBe(nV);
+    const nodeCount = skeleton.radii.length;
+    expect(Math.max(...skeleton.vertexToNode)).toBeLessThan(nodeCount);
+    // Regions are connected on the surface: a flood over same-label edges reaches each label once.
+    const neighbours: number[][] = Array.from({ length: nV }, () => []);
+    for (let f = 0; f < mesh.triangles.length; f += 3)
+      for (let k = 0; k < 3; k++) neighbours[mesh.triangles[f + k]].push(mesh.triangles[f + ((k + 1) % 3)], mesh.triangles[f + ((k + 2) % 3)]);
+    const seen = new Uint8Array(nV);
+    const floods = new Map<number, number>();
+    for (let v = 0; v < nV; v++) {
+      if (seen[v]) continue;
+      const label = skeleton.vertexToNode[v];
+      floods.set(label, (floods.get(label) ?? 0) + 1);
+      const stack = [v];
+      seen[v] = 1;
+      while (stack.length) for (const w of neighbours[stack.pop()!]) if (!seen[w] && skeleton.vertexToNode[w] === label) (seen[w] = 1), stack.push(w);
+    }
+    for (const count of floods.values()) expect(count).toBe(1);
+    // Stats agree with the data.
+    expect(skeleton.stats.packed).toBe(skeleton.packed.length);
+    expect(skeleton.stats.candidates).toBe(skeleton.candidates.loops.length);
+    expect(skeleton.candidates.fates.filter((f) => f === 'packed').length).toBe(skeleton.packed.length);
+  });
+
+  it('runs as a resumable job with progress', () => {
+    const surface = core.openSurface(readMesh(sharedMesh('two_torus.ply')));
+    const pipeline = surface.pipeline({ n: 12 });
+    const seen: number[] = [];
+    let progress;
+    do {
+      progress = pipeline.step(5);
+      seen.push(progress.done);
+      expect(progress.total).toBe(12);
+      expect(progress.newLoops.length).toBe(seen.length === 1 ? 5 : progress.done - seen[seen.length - 2]);
+    } while (!progress.finished);
+    expect(seen).toEqual([5, 10, 12]);
+    const skeleton = pipeline.finish();
+    expect(skeleton.stats.n).toBe(12);
+    pipeline.dispose();
+    expect(() => surface.pipeline({ n: 'many' as unknown as number })).toThrow(/n must be a number of sources or 'auto'/);
+    surface.dispose();
+  });
+});

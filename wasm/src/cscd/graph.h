@@ -1,0 +1,29 @@
+#pragma once
+
+#include "geometrycentral/utilities/vector3.h"
+
+#include <array>
+#include <set>
+#include <vector>
+
+namespace cscd {
+
+// A skeleton graph: nodes with positions and radii, undirected edges.
+struct SkeletonGraph {
+  std::vector<geometrycentral::Vector3> nodes;
+  std::vector<double> radii;
+  std::vector<double> weights; // e.g. the surface area a node stands for, for weighted means
+  std::vector<std::array<size_t, 2>> edges;
+
+  size_t components() const;
+  size_t cycleRank() const { return edges.size() + components() - nodes.size(); }
+};
+
+// Clique to star (paper Sec. 4.2.5, after LS): 3-cliques that are junctions are grouped when they share
+// an edge, and each group becomes a star around a new node at the weighted mean of its members. Only
+// triangles listed in `junctions` (sorted node triples) count: three regions that meet at one place
+// of the surface. A ring of three regions that touch pairwise in three different places is a cycle of
+// the shape (e.g. a torus cut by three separators), not a junction, and is kept.
+void cliquesToStars(SkeletonGraph& graph, const std::set<std::array<size_t, 3>>& junctions);
+
+} // namespace cscd

@@ -1,0 +1,148 @@
+#pragma once
+
+// The CSCD framework (paper Alg. 1), independent of the shape's representation. A Realization (CSCD-M:
+// MeshRealization in mesh/realization.h) supplies the representation-specific steps:
+//   Candidate separator(size_t source)          stage 1 from one source (Alg. 2)
+//   size_t nextSource()                         adaptive sampling (Sec. 4.1.7)
+//   void cover(size_t candidate)                what the candidate's source and loop now cover
+//   double coverage()                           share of the shape near what is covered
+//   double resolution()                         mean sample spacing (edge length)
+//   std::vector<std::vector<size_t>> overlaps(const std::vector<size_t>& candidates)
+//   Regions regions(const std::vector<size_t>& packed)
+//   void centre(SkeletonGraph& graph, const std::vector<size_t>& packed)   nodes outside the shape moved in
+
+#include "cscd/graph.h"
+#include "cscd/options.h"
+#include "cscd/pack.h"
+#include "cscd/regions.h"
+
+#include <chrono>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cscd {
+
+// A separator found in stage 1, as stage 2 needs it.
+struct Candidate {
+  size_t source = 0;
+  bool found = false;                           // stage 1 produced a loop
+  std::vector<geometrycentral::Vector3> loop;   // closed polyline on the shape
+  double length = 0;
+  double score = 0;
+  bool centroidInside = false;
+};
+
+enum class Fate { Packed, Overlapping, Short, Outside, Failed };
+
+struct Skeleton {
+  SkeletonGraph graph;
+  std::vector<uint32_t> vertexToNode; // per element of the shape: its region's node
+  std::vector<Candidate> candidates;
+  std::vector<Fate> fates;
+  std::vector<size_t> packed; // candidate indices; packed separator i owns node i
+  size_t pruned = 0;
+  std::vector<std::pair<std::string, double>> timings; // milliseconds per stage
+};
+
+struct Progress {
+  size_t done = 0;
+  size_t total = 0;
+  bool finished = false;
+};
+
+// Auto mode: sampling stops when the shape is covered (99% of it near a source or separator, as the
+// realization measures it) or when the last 20 sources added less than 0.5% coverage; never past
+// kMaxAutoSources.
+constexpr size_t kMaxAutoSources = 400;
+constexpr size_t kAutoWindow = 20;
+constexpr double kAutoCovered = 0.99;
+constexpr double kAutoMinGain = 0.005;
+
+template <class Realization>
+class Pipeline {
+public:
+  Pipeline(Realization& realization, const Options& options) : realization(realization), options(options) {}
+
+  // Stage 1 for up to `count` more sources.
+  Progress step(size_t count) {
+    auto start = std::chrono::steady_clock::now();
+    for (size_t k = 0; k < count && !done; k++) {
+      candidates.push_back(realization.separator(realization.nextSource()));
+      realization.cover(candidates.size() - 1);
+      coverageHistory.push_back(realization.coverage());
+      done = options.n > 0 ? candidates.size() >= size_t(options.n) : autoSaturated();
+    }
+    stage1Ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return {candidates.size(), done ? candidates.size() : total(), done};
+  }
+
+  // Stage 2 (after the remaining sources of stage 1): prune, pack, regions, graph, clique to star.
+  Skeleton finish() {
+    while (!done) step(1);
+    Skeleton skeleton;
+    skeleton.timings.emplace_back("separators", stage1Ms);
+    auto clock = std::chrono::steady_clock::now();
+    auto lap = [&](const char* stage) {
+      auto now = std::chrono::steady_clock::now();
+      skeleton.timings.emplace_back(stage, std::chrono::duration<double, std::milli>(now - clock).count());
+      clock = now;
+    };
+
+    skeleton.fates.assign(candidates.size(), Fate::Overlapping);
+    std::vector<size_t> kept;
+    const double shortest = options.pruneLengthFactor * realization.resolution();
+    for (size_t i = 0; i < candidates.size(); i++) {
+      const Candidate& c = candidates[i];
+      Fate& fate = skeleton.fates[i];
+      fate = !c.found ? Fate::Failed : c.length < shortest ? Fate::Short : !c.centroidInside ? Fate::Outside : fate;
+      if (fate == Fate::Overlapping) kept.push_back(i);
+      else if (fate != Fate::Failed) skeleton.pruned++;
+    }
+    lap("prune");
+
+    std::vector<std::vector<size_t>> overlaps = realization.overlaps(kept);
+    std::vector<double> scores;
+    for (size_t i : kept) scores.push_back(candidates[i].score);
+    for (size_t j : packSeparators(scores, overlaps)) {
+      skeleton.packed.push_back(kept[j]);
+      skeleton.fates[kept[j]] = Fate::Packed;
+    }
+    lap("pack");
+
+    Regions regions = realization.regions(skeleton.packed);
+    skeleton.vertexToNode = regions.label;
+    lap("regions");
+
+    SkeletonGraph& graph = skeleton.graph;
+    graph.nodes = regions.centroid;
+    graph.radii = regions.radius;
+    graph.weights = regions.area;
+    graph.edges.assign(regions.adjacent.begin(), regions.adjacent.end());
+    cliquesToStars(graph, regions.junctions);
+    realization.centre(graph, skeleton.packed);
+    lap("graph");
+
+    skeleton.candidates = std::move(candidates);
+    candidates.clear();
+    return skeleton;
+  }
+
+private:
+  size_t total() const { return options.n > 0 ? size_t(options.n) : kMaxAutoSources; }
+
+  bool autoSaturated() const {
+    const size_t k = coverageHistory.size();
+    if (k >= kMaxAutoSources || coverageHistory.back() >= kAutoCovered) return true;
+    return k > kAutoWindow && coverageHistory.back() - coverageHistory[k - 1 - kAutoWindow] < kAutoMinGain;
+  }
+
+  Realization& realization;
+  Options options;
+  std::vector<Candidate> candidates;
+  std::vector<double> coverageHistory;
+  double stage1Ms = 0;
+  bool done = false;
+};
+
+} // namespace cscd

@@ -1,0 +1,66 @@
+#include "mesh/realization.h"
+
+#include "mesh/measures.h"
+#include "mesh/overlap.h"
+#include "mesh/regions.h"
+#include "mesh/separator.h"
+
+namespace cscd {
+
+// Coverage radius of the auto mode: 3% of the bounding-box diagonal.
+constexpr double kCoverageRadius = 0.03;
+// Loops closer than half a mean edge length touch.
+constexpr double kOverlapTolerance = 0.5;
+
+MeshRealization::MeshRealization(Surface& surface_, const Options& options_)
+    : surface(surface_), options(options_), sampler(surface_, options_.seed) {}
+
+Candidate MeshRealization::separator(size_t source) {
+  SeparatorResult result = computeSeparator(surface, source, options);
+  Candidate candidate;
+  candidate.source = source;
+  candidate.found = result.status == "ok";
+  candidate.loop = result.loop;
+  candidate.length = result.length;
+  candidate.score = result.score;
+  candidate.centroidInside = result.centroidInside;
+  sources.push_back(source);
+  loops.push_back(std::move(result.loop));
+  loopPoints.push_back(std::move(result.loopPoints));
+  return candidate;
+}
+
+void MeshRealization::cover(size_t candidate) { sampler.cover(sources[candidate], loopPoints[candidate]); }
+
+double MeshRealization::coverage() const { return sampler.coverage(kCoverageRadius * surface.facts().bboxDiagonal); }
+
+std::vector<std::vector<size_t>> MeshRealization::overlaps(const std::vector<size_t>& candidates) const {
+  std::vector<std::vector<geometrycentral::Vector3>> selected;
+  for (size_t c : candidates) selected.push_back(loops[c]);
+  return overlappingLoops(selected, kOverlapTolerance * surface.facts().meanEdgeLength);
+}
+
+Regions MeshRealization::regions(const std::vector<size_t>& packed) {
+  std::vector<std::vector<geometrycentral::surface::SurfacePoint>> selected;
+  for (size_t c : packed) selected.push_back(loopPoints[c]);
+  return assignRegions(surface, selected);
+}
+
+void MeshRealization::centre(SkeletonGraph& graph, const std::vector<size_t>& packed) const {
+  auto inside = [&](const geometrycentral::Vector3& p) { return windingNumber(surface.geometry(), p) > 0.5; };
+  for (size_t node = 0; node < graph.nodes.size(); node++) {
+    if (inside(graph.nodes[node])) continue;
+    if (node < packed.size()) {
+      graph.nodes[node] = loopCentroid(loops[packed[node]]);
+    } else if (graph.weights[node] == 0) {
+      size_t heaviest = SIZE_MAX;
+      for (const auto& e : graph.edges) {
+        size_t other = e[0] == node ? e[1] : e[1] == node ? e[0] : SIZE_MAX;
+        if (other != SIZE_MAX && (heaviest == SIZE_MAX || graph.weights[other] > graph.weights[heaviest])) heaviest = other;
+      }
+      if (heaviest != SIZE_MAX) graph.nodes[node] = graph.nodes[heaviest];
+    }
+  }
+}
+
+} // namespace cscd

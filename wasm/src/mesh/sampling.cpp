@@ -1,0 +1,50 @@
+#include "mesh/sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace geometrycentral;
+using namespace geometrycentral::surface;
+
+namespace cscd {
+
+SourceSampler::SourceSampler(Surface& surface_, uint32_t seed)
+    : surface(surface_), rng(seed), distance(surface_.vertexCount(), INFINITY), scale(surface_.facts().bboxDiagonal / 10) {
+  VertexPositionGeometry& geometry = surface.geometry();
+  geometry.requireVertexDualAreas();
+  area.resize(surface.vertexCount());
+  for (size_t v = 0; v < area.size(); v++) totalArea += area[v] = geometry.vertexDualAreas[v];
+}
+
+size_t SourceSampler::next() {
+  // Unreached vertices (nothing sampled yet in their component) get the largest finite weight.
+  constexpr double kMaxExponent = 50;
+  std::vector<double> cumulative(area.size());
+  double sum = 0;
+  bool anyCovered = std::any_of(distance.begin(), distance.end(), [](double d) { return std::isfinite(d); });
+  for (size_t v = 0; v < area.size(); v++) {
+    double weight = area[v];
+    if (anyCovered) weight *= std::expm1(std::isfinite(distance[v]) ? std::min(distance[v] / scale, kMaxExponent) : kMaxExponent);
+    cumulative[v] = sum += weight;
+  }
+  // 53 random bits make a uniform double in [0, 1) the same way on every platform.
+  double u = double((uint64_t(rng()) << 21) ^ uint64_t(rng() >> 11)) / 9007199254740992.0;
+  size_t v = size_t(std::upper_bound(cumulative.begin(), cumulative.end(), u * sum) - cumulative.begin());
+  return std::min(v, area.size() - 1);
+}
+
+void SourceSampler::cover(size_t source, const std::vector<SurfacePoint>& loop) {
+  std::vector<SurfacePoint> covered = loop;
+  covered.emplace_back(surface.mesh().vertex(source));
+  std::vector<double> d = surface.geodesics().fromPoints(covered);
+  for (size_t v = 0; v < d.size(); v++) distance[v] = std::min(distance[v], d[v]);
+}
+
+double SourceSampler::coverage(double radius) const {
+  double covered = 0;
+  for (size_t v = 0; v < area.size(); v++)
+    if (distance[v] <= radius) covered += area[v];
+  return totalArea > 0 ? covered / totalArea : 1;
+}
+
+} // namespace cscd

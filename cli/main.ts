@@ -6,12 +6,14 @@ import { readFileSync } from 'node:fs';
 import { parseArgs, type ParseArgsConfig } from 'node:util';
 import { CoreError } from '../lib/core/types.ts';
 import { MESH_EXTENSIONS, MeshFormatError } from '../lib/io/index.ts';
+import { SkeletonFormatError } from '../lib/io/skeleton.ts';
 import { UsageError, type Command } from './command.ts';
 import { distance } from './commands/distance.ts';
 import { info } from './commands/info.ts';
 import { separator } from './commands/separator.ts';
+import { skeleton } from './commands/skeleton.ts';
 
-const COMMANDS: Command[] = [info, distance, separator];
+const COMMANDS: Command[] = [info, distance, separator, skeleton];
 
 async function main(argv: string[]): Promise<void> {
   const [first, ...rest] = argv;
@@ -111,7 +113,7 @@ function commandHelp(command: Command): string {
  * (a RangeError, a WASM RuntimeError...) keep their name as a hint of what went wrong.
  */
 function report(error: unknown): void {
-  const ours = error instanceof MeshFormatError || error instanceof CoreError || error instanceof UsageError;
+  const ours = error instanceof MeshFormatError || error instanceof SkeletonFormatError || error instanceof CoreError || error instanceof UsageError;
   const message = !(error instanceof Error) ? String(error)
     : ours || error.constructor === Error ? error.message
     : `${error.name}: ${error.message}`;

@@ -36,6 +36,8 @@ const TARGETS: Record<Options['target'], string> = {
 interface OptionFlag<K extends keyof Options> {
   /** The kebab-case of the field name; a boolean that is on by default is switched off by --no-NAME. */
   flag: string;
+  /** Only the pipeline (stage 2) uses the option: `cscd separator` does not take its flag. */
+  pipelineOnly?: true;
   spec: OptionSpec;
   parse(value: string | boolean, flag: string): Options[K];
 }
@@ -61,7 +63,7 @@ const OPTION_FLAGS: { [K in keyof Options]: OptionFlag<K> } = {
   },
   seed: {
     flag: 'seed',
-    spec: { type: 'string', value: 'S', description: `seed of every random choice, e.g. the source without --source (0 to 2^32-1, default ${defaultOptions.seed})` },
+    spec: { type: 'string', value: 'S', description: `seed of every random choice: the sources drawn (0 to 2^32-1, default ${defaultOptions.seed})` },
     parse: (value, flag) => parseInteger(value, flag, optionRanges.seed[1]),
   },
   angleThreshold: {
@@ -89,11 +91,39 @@ const OPTION_FLAGS: { [K in keyof Options]: OptionFlag<K> } = {
     spec: { type: 'string', value: 'N', description: `cut locus: prune leaf branches with fewer edges than N (default ${defaultOptions.pruneDepth})` },
     parse: (value, flag) => parseInteger(value, flag, optionRanges.pruneDepth[1]),
   },
+  n: {
+    flag: 'n',
+    pipelineOnly: true,
+    spec: { type: 'string', value: 'N|auto', description: `number of sources (separators tried), or auto: draw sources until new separators stop adding coverage (default ${defaultOptions.n})` },
+    parse(value, flag) {
+      if (value === 'auto') return 'auto';
+      const [low, high] = optionRanges.n;
+      const text = String(value);
+      const n = /^\d+$/.test(text) ? Number(text) : NaN;
+      if (!(n >= low && n <= high)) throw new UsageError(`--${flag} must be auto or an integer from ${low} to ${high}, got '${text}'`);
+      return n;
+    },
+  },
+  pruneLengthFactor: {
+    flag: 'prune-length-factor',
+    pipelineOnly: true,
+    spec: { type: 'string', value: 'X', description: `prune loops shorter than X mean edge lengths: they enclose no feature (default ${defaultOptions.pruneLengthFactor})` },
+    parse(value, flag) {
+      const factor = parseNumber(value, flag);
+      const [low, high] = optionRanges.pruneLengthFactor;
+      if (factor < low || factor > high) throw new UsageError(`--${flag} must be a number from ${low} to ${high}, got '${String(value)}'`);
+      return factor;
+    },
+  },
 };
 
-/** The option flags as parseArgs specs, e.g. for scripts that take the same options as the command. */
-export function optionFlagSpecs(): Record<string, OptionSpec> {
-  return Object.fromEntries(Object.values(OPTION_FLAGS).map(({ flag, spec }) => [flag, spec]));
+/**
+ * The option flags as parseArgs specs, e.g. for scripts that take the same options as the command;
+ * with `pipeline: false`, only those of stage 1 (what `cscd separator` takes).
+ */
+export function optionFlagSpecs({ pipeline = true } = {}): Record<string, OptionSpec> {
+  const flags: OptionFlag<keyof Options>[] = Object.values(OPTION_FLAGS);
+  return Object.fromEntries(flags.filter((f) => pipeline || !f.pipelineOnly).map(({ flag, spec }) => [flag, spec]));
 }
 
 function describeTargets(): string {
@@ -190,7 +220,7 @@ export const separator: Command = {
   args: ['<mesh>'],
   options: {
     source: { type: 'string', value: 'V', description: 'source vertex index (0-based; default: a vertex drawn with the seed)' },
-    ...optionFlagSpecs(),
+    ...optionFlagSpecs({ pipeline: false }),
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
   details: [

@@ -136,6 +136,7 @@ export interface Skeleton {
   stats: {
     /** Sources tried (N; the one chosen in auto mode). */
     n: number;
+    /** Sources whose stage 1 found a loop. */
     candidates: number;
     pruned: number;
     packed: number;

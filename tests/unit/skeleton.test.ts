@@ -28,7 +28,7 @@ function components(nodeCount: number, edges: Uint32Array): number {
   const parent = Array.from({ length: nodeCount }, (_, i) => i);
   const find = (x: number): number => (parent[x] === x ? x : (parent[x] = find(parent[x])));
   for (let i = 0; i < edges.length; i += 2) parent[find(edges[i])] = find(edges[i + 1]);
-  return parent.filter((p, i) => find(i) === i).length;
+  return parent.filter((_, i) => find(i) === i).length;
 }
 
 function leaves(skeleton: Skeleton): number[] {
@@ -150,7 +150,8 @@ describe('skeleton shape and bookkeeping', () => {
     for (const count of floods.values()) expect(count).toBe(1);
     // Stats agree with the data.
     expect(skeleton.stats.packed).toBe(skeleton.packed.length);
-    expect(skeleton.stats.candidates).toBe(skeleton.candidates.loops.length);
+    expect(skeleton.stats.n).toBe(skeleton.candidates.loops.length);
+    expect(skeleton.stats.candidates).toBe(skeleton.candidates.fates.filter((f) => f !== 'failed').length);
     expect(skeleton.candidates.fates.filter((f) => f === 'packed').length).toBe(skeleton.packed.length);
   });
 

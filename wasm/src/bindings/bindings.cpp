@@ -8,6 +8,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -213,7 +214,8 @@ val toVal(const Skeleton& skeleton, const Options& options) {
 
   val stats = val::object();
   stats.set("n", skeleton.candidates.size());
-  stats.set("candidates", skeleton.candidates.size());
+  stats.set("candidates", size_t(std::count_if(skeleton.candidates.begin(), skeleton.candidates.end(),
+                                               [](const Candidate& c) { return c.found; })));
   stats.set("pruned", skeleton.pruned);
   stats.set("packed", skeleton.packed.size());
   stats.set("cycles", g.cycleRank());

@@ -9,8 +9,9 @@ namespace cscd {
 
 // Coverage radius of the auto mode: 3% of the bounding-box diagonal.
 constexpr double kCoverageRadius = 0.03;
-// Loops closer than half a mean edge length touch.
-constexpr double kOverlapTolerance = 0.5;
+// Loops closer than one mean edge length overlap: a slab between them too thin to hold a vertex would
+// let the regions on either side touch and form spurious junctions.
+constexpr double kOverlapTolerance = 1.0;
 
 MeshRealization::MeshRealization(Surface& surface_, const Options& options_)
     : surface(surface_), options(options_), sampler(surface_, options_.seed) {}

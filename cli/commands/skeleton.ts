@@ -1,0 +1,104 @@
+import { writeFile } from 'node:fs/promises';
+import path from 'node:path';
+import type { Skeleton } from '../../lib/core/types.ts';
+import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
+import { UsageError, getCore, readMesh, type Command, type OptionValues } from '../command.ts';
+import { optionFlagSpecs, optionsFromFlags } from './separator.ts';
+
+/** Sources per pipeline step: small enough for a lively progress line, the step cost is one JS/WASM call. */
+const SOURCES_PER_STEP = 1;
+/** At most this often (ms) is the progress line redrawn. */
+const PROGRESS_INTERVAL = 100;
+
+/** --format, else the extension of --out, else JSON. */
+function outputFormat(values: OptionValues): SkeletonFormat {
+  if (values.format !== undefined) {
+    const format = String(values.format).toLowerCase();
+    if (!(SKELETON_FORMATS as string[]).includes(format)) {
+      throw new UsageError(`--format must be one of ${SKELETON_FORMATS.join(', ')}, got '${String(values.format)}'`);
+    }
+    return format as SkeletonFormat;
+  }
+  return typeof values.out === 'string' ? skeletonFormatFromName(values.out) ?? 'json' : 'json';
+}
+
+/** A line on stderr that rewrites itself (only used when stderr is a terminal). */
+class ProgressLine {
+  private last = -Infinity;
+  private shown = false;
+
+  update(text: string, force = false): void {
+    const now = performance.now();
+    if (!force && now - this.last < PROGRESS_INTERVAL) return;
+    this.last = now;
+    this.shown = true;
+    process.stderr.write(`\r${text}\x1b[K`);
+  }
+
+  clear(): void {
+    if (this.shown) process.stderr.write('\r\x1b[K');
+    this.shown = false;
+  }
+}
+
+export const skeleton: Command = {
+  name: 'skeleton',
+  summary: 'the curve skeleton of a mesh (CSCD-M, stages 1 and 2), as JSON, PLY, OBJ or SWC',
+  args: ['<mesh>'],
+  options: {
+    ...optionFlagSpecs(),
+    format: { type: 'string', value: SKELETON_FORMATS.join('|'), description: 'output format (default: from the --out extension, else json)' },
+    out: { type: 'string', value: 'FILE', description: 'write the skeleton to FILE instead of stdout' },
+    verbose: { type: 'boolean', short: 'v', description: 'print the summary line on stderr even when it is not a terminal' },
+  },
+  details: [
+    'Draws N sources with the seed (--n auto: until new separators stop adding coverage), finds a local',
+    'separator from each (stage 1, as `cscd separator`), then keeps the best non-overlapping ones and',
+    'builds the skeleton from the regions they bound (stage 2). On a terminal, progress and a summary',
+    '(nodes, edges, cycles, N, seconds) go to stderr. Formats and keys: docs/cli.md.',
+  ].join('\n'),
+  async run([file], values) {
+    const options = optionsFromFlags(values);
+    const format = outputFormat(values);
+    const mesh = await readMesh(file);
+    const core = await getCore();
+    const tty = process.stderr.isTTY === true;
+    const progress = new ProgressLine();
+    const name = path.basename(file);
+
+    const started = performance.now();
+    let result: Skeleton;
+    const surface = core.openSurface(mesh);
+    try {
+      const pipeline = surface.pipeline(options);
+      try {
+        for (;;) {
+          const step = pipeline.step(SOURCES_PER_STEP);
+          if (tty) progress.update(`cscd: skeleton of ${name}: stage 1, source ${step.done} of ${options.n === 'auto' ? `at most ${step.total}` : step.total}`);
+          if (step.finished) break;
+        }
+        if (tty) progress.update(`cscd: skeleton of ${name}: stage 2`, true);
+        result = pipeline.finish();
+      } finally {
+        pipeline.dispose();
+      }
+    } finally {
+      surface.dispose();
+      progress.clear();
+    }
+    const seconds = (performance.now() - started) / 1000;
+
+    const text = SKELETON_WRITERS[format](result, { mesh: file, options });
+    if (typeof values.out === 'string') await writeFile(values.out, text);
+    else process.stdout.write(text);
+
+    const { stats } = result;
+    if (stats.packed === 0) process.stderr.write(`cscd: warning: ${file}: no separator was kept: the skeleton is one node per connected component\n`);
+    if (tty || values.verbose === true) {
+      const nodes = result.nodes.length / 3;
+      const edges = result.edges.length / 2;
+      process.stderr.write(`cscd: skeleton of ${name}: ${nodes} nodes, ${edges} edges, ${stats.cycles} cycles, `
+        + `N = ${stats.n} (${stats.packed} of ${stats.candidates} separators kept), ${seconds.toFixed(1)} s\n`);
+    }
+  },
+};

@@ -1,0 +1,161 @@
+// `cscd skeleton` run as users run it: a child process writing the curve skeleton in each format.
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { defaultOptions } from '../../lib/core/options.ts';
+import { parseSkeleton, spanningForest, type SkeletonJson } from '../../lib/io/skeleton.ts';
+import { repoRoot, sharedMesh } from '../paths.ts';
+import { icosphere } from './support/meshes.ts';
+
+const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-skeleton-'));
+afterAll(() => rmSync(tmp, { recursive: true, force: true }));
+
+function cscd(...args: string[]) {
+  const result = spawnSync(process.execPath, ['cli/cscd.mjs', ...args], { cwd: repoRoot, encoding: 'utf8' });
+  return { status: result.status, stdout: result.stdout, stderr: result.stderr };
+}
+
+const KEYS = ['mesh', 'nodes', 'radii', 'edges', 'vertexToNode', 'separators', 'stats', 'options'];
+const STATS = ['n', 'candidates', 'pruned', 'packed', 'cycles', 'seed', 'timings'];
+/** The one part of the JSON that changes from run to run. */
+const withoutTimings = (text: string) => text.replace(/"timings":\{[^{}]*\}/, '"timings":{}');
+
+const twoTorus = sharedMesh('two_torus.ply');
+const VERTICES = 766;
+
+describe('cscd skeleton', () => {
+  let text: string;
+  let json: SkeletonJson;
+  beforeAll(() => {
+    const out = path.join(tmp, 'skel.json');
+    const result = cscd('skeleton', twoTorus, '--out', out);
+    // Not a terminal and no --verbose: nothing on stderr.
+    expect(result).toEqual({ status: 0, stdout: '', stderr: '' });
+    text = readFileSync(out, 'utf8');
+    json = JSON.parse(text) as SkeletonJson;
+  }, 120_000);
+
+  it('writes every key, in order, with one node per input vertex and two cycles for genus 2', () => {
+    expect(Object.keys(json)).toEqual(KEYS);
+    expect(Object.keys(json.stats)).toEqual(STATS);
+    expect(json.mesh).toBe(twoTorus);
+    expect(json.options).toEqual({ ...defaultOptions });
+    expect(json.stats.seed).toBe(defaultOptions.seed);
+
+    const nodeCount = json.nodes.length;
+    expect(nodeCount).toBeGreaterThan(0);
+    expect(json.nodes.every((p) => p.length === 3 && p.every(Number.isFinite))).toBe(true);
+    expect(json.radii).toHaveLength(nodeCount);
+    expect(json.radii.every((r) => Number.isFinite(r) && r > 0)).toBe(true);
+    expect(json.edges.flat().every((i) => Number.isInteger(i) && i >= 0 && i < nodeCount)).toBe(true);
+    expect(json.vertexToNode).toHaveLength(VERTICES);
+    expect(json.vertexToNode.every((i) => Number.isInteger(i) && i >= 0 && i < nodeCount)).toBe(true);
+
+    expect(json.stats.cycles).toBe(2);
+    // cycles is E - V + components of the graph written: the edges are the skeleton's own.
+    const forest = spanningForest(nodeCount, Uint32Array.from(json.edges.flat()));
+    expect(forest.cycleEdges).toHaveLength(json.stats.cycles);
+    expect(forest.components).toBe(1);
+
+    expect(json.separators).toHaveLength(json.stats.packed);
+    expect(json.separators.every((loop) => loop.length >= 3 && loop.every((p) => p.length === 3 && p.every(Number.isFinite)))).toBe(true);
+    expect(json.stats.packed).toBeGreaterThan(0);
+    expect(json.stats.packed).toBeLessThanOrEqual(json.stats.candidates);
+    expect(json.stats.candidates).toBeLessThanOrEqual(json.stats.n);
+    expect(Object.values(json.stats.timings).every((ms) => Number.isFinite(ms) && ms >= 0)).toBe(true);
+  });
+
+  it('gives the same JSON, byte for byte but the timings, from the same seed', () => {
+    const again = cscd('skeleton', twoTorus);
+    expect(again.status).toBe(0);
+    expect(withoutTimings(again.stdout)).toBe(withoutTimings(text));
+    expect(Object.keys((JSON.parse(again.stdout) as SkeletonJson).stats.timings)).toEqual(Object.keys(json.stats.timings));
+  }, 120_000);
+
+  it('writes PLY, OBJ and SWC that read back to the same skeleton (format from --format, else the --out extension)', () => {
+    const ply = path.join(tmp, 'skel.ply');
+    const swc = path.join(tmp, 'skel.txt');
+    const runs = {
+      ply: cscd('skeleton', twoTorus, '--out', ply),
+      obj: cscd('skeleton', twoTorus, '--format', 'obj', '--verbose'),
+      swc: cscd('skeleton', twoTorus, '--format', 'swc', '--out', swc),
+    };
+    for (const [format, result] of Object.entries(runs)) expect(result.status, format).toBe(0);
+    const files = {
+      ply: readFileSync(ply, 'utf8'),
+      obj: runs.obj.stdout,
+      swc: readFileSync(swc, 'utf8'),
+    };
+    expect(files.ply.startsWith('ply\nformat ascii 1.0\n')).toBe(true);
+    expect(files.swc).toMatch(/\n# cycle edges: \d+-\d+ \d+-\d+\n/);
+
+    const nodes = Float64Array.from(json.nodes.flat());
+    const edges = json.edges.map(([a, b]) => `${Math.min(a, b)}-${Math.max(a, b)}`).sort();
+    for (const [format, content] of Object.entries(files)) {
+      const read = parseSkeleton(content, `skeleton.${format}`);
+      expect(read.format).toBe(format);
+      expect(read.nodes, format).toEqual(nodes);
+      expect(read.radii, format).toEqual(Float64Array.from(json.radii));
+      const pairs: string[] = [];
+      for (let k = 0; k < read.edges.length; k += 2) pairs.push(`${Math.min(read.edges[k], read.edges[k + 1])}-${Math.max(read.edges[k], read.edges[k + 1])}`);
+      expect(pairs.sort(), format).toEqual(edges);
+    }
+
+    // --verbose: the summary line, although stderr is not a terminal.
+    expect(runs.obj.stderr).toBe(`cscd: skeleton of two_torus.ply: ${json.nodes.length} nodes, ${json.edges.length} edges, 2 cycles, `
+      + `N = ${json.stats.n} (${json.stats.packed} of ${json.stats.candidates} separators kept), ${/, ([\d.]+) s\n$/.exec(runs.obj.stderr)?.[1]} s\n`);
+    expect(runs.ply.stderr).toBe('');
+  }, 240_000);
+
+  it('writes a one-node skeleton for a sphere (no separator kept), with a warning and exit code 0', () => {
+    const { positions, triangles } = icosphere(3);
+    const lines = ['OFF', `${positions.length / 3} ${triangles.length / 3} 0`];
+    for (let i = 0; i < positions.length; i += 3) lines.push(Array.from(positions.subarray(i, i + 3)).join(' '));
+    for (let i = 0; i < triangles.length; i += 3) lines.push(`3 ${Array.from(triangles.subarray(i, i + 3)).join(' ')}`);
+    const sphere = path.join(tmp, 'sphere.off');
+    writeFileSync(sphere, `${lines.join('\n')}\n`);
+
+    const result = cscd('skeleton', sphere, '--n', '10');
+    expect(result.status).toBe(0);
+    expect(result.stderr).toBe(`cscd: warning: ${sphere}: no separator was kept: the skeleton is one node per connected component\n`);
+    const one = JSON.parse(result.stdout) as SkeletonJson;
+    expect(one.nodes).toHaveLength(1);
+    expect(one.edges).toEqual([]);
+    expect(one.separators).toEqual([]);
+    expect(one.stats).toMatchObject({ n: 10, packed: 0, cycles: 0 });
+    expect(one.vertexToNode).toEqual(new Array(positions.length / 3).fill(0));
+    // The centre of the unit sphere, and its radius.
+    expect(Math.hypot(...one.nodes[0])).toBeLessThan(1e-6);
+    expect(one.radii[0]).toBeCloseTo(1, 2);
+  }, 120_000);
+});
+
+// These stop before the core is loaded.
+describe('cscd skeleton usage', () => {
+  it('rejects a bad --format, --n or --prune-length-factor with a usage error (exit 2, one cscd: line)', () => {
+    for (const [args, message] of [
+      [['--format', 'off'], "--format must be one of json, ply, obj, swc, got 'off'"],
+      [['--n', '0'], "--n must be auto or an integer from 1 to 100000, got '0'"],
+      [['--n', 'many'], "--n must be auto or an integer from 1 to 100000, got 'many'"],
+      [['--n', '2.5'], "--n must be auto or an integer from 1 to 100000, got '2.5'"],
+      [['--n', '100001'], "--n must be auto or an integer from 1 to 100000, got '100001'"],
+      [['--prune-length-factor', 'x'], "--prune-length-factor must be a number, got 'x'"],
+      [['--prune-length-factor=-1'], "--prune-length-factor must be a number from 0 to 1000, got '-1'"],
+    ] as [string[], string][]) {
+      const result = cscd('skeleton', twoTorus, ...args);
+      expect(result, args.join(' ')).toEqual({ status: 2, stdout: '', stderr: `cscd: ${message}\n` });
+    }
+    // Stage-2 options are not flags of `cscd separator`.
+    expect(cscd('separator', twoTorus, '--n', '5')).toMatchObject({ status: 2, stdout: '' });
+  });
+
+  it('is listed in the help with its options', () => {
+    expect(cscd('--help').stdout).toMatch(/skeleton <mesh> \[options\]/);
+    const help = cscd('help', 'skeleton').stdout;
+    expect(help).toMatch(/--n N\|auto\s+number of sources/);
+    expect(help).toMatch(/--format json\|ply\|obj\|swc/);
+    expect(help).toMatch(/--prune-length-factor X/);
+  });
+});

@@ -176,3 +176,54 @@ export async function colorCensus(page: Page, minSaturation = 0.6): Promise<Reco
     { hues: LAYER_HUES as unknown as Record<string, number[][]>, minSaturation },
   ) as Promise<Record<LayerHue, number>>;
 }
+
+export interface HueCensus {
+  /** Pixels per named hue range (HSV saturation >= minSaturation, value >= 0.3, alpha >= minAlpha). */
+  counts: Record<string, number>;
+  /** Pixels drawn see-through: 0.04 < alpha < 0.9 (a translucent surface over the empty background). */
+  translucent: number;
+  /** Pixels drawn opaque (alpha >= 0.98). */
+  opaque: number;
+}
+
+/**
+ * Counts canvas pixels in hue ranges (degrees, [lo, hi) pairs per name), for layers of any colour;
+ * also counts translucent and opaque pixels.
+ */
+export async function hueCensus(
+  page: Page,
+  hues: Record<string, ReadonlyArray<readonly [number, number]>>,
+  { minSaturation = 0.5, minAlpha = 0.5 } = {},
+): Promise<HueCensus> {
+  return page.evaluate(
+    ({ hues, minSaturation, minAlpha }) => {
+      const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="viewport-canvas"]');
+      if (!canvas) throw new Error('no canvas');
+      const copy = document.createElement('canvas');
+      copy.width = canvas.width;
+      copy.height = canvas.height;
+      const ctx = copy.getContext('2d', { willReadFrequently: true })!;
+      ctx.drawImage(canvas, 0, 0);
+      const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
+      const names = Object.keys(hues);
+      const counts: Record<string, number> = Object.fromEntries(names.map((n) => [n, 0]));
+      let translucent = 0;
+      let opaque = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        const a = data[i + 3] / 255;
+        if (a > 0.04 && a < 0.9) translucent++;
+        if (a >= 0.98) opaque++;
+        if (a < minAlpha) continue;
+        const r = data[i] / 255, g = data[i + 1] / 255, b = data[i + 2] / 255;
+        const max = Math.max(r, g, b), min = Math.min(r, g, b);
+        if (max < 0.3 || (max - min) / max < minSaturation) continue;
+        const d = max - min;
+        let h = max === r ? (g - b) / d : max === g ? 2 + (b - r) / d : 4 + (r - g) / d;
+        h = ((h * 60) % 360 + 360) % 360;
+        for (const name of names) if (hues[name].some(([lo, hi]) => h >= lo && h < hi)) counts[name]++;
+      }
+      return { counts, translucent, opaque };
+    },
+    { hues: hues as unknown as Record<string, number[][]>, minSaturation, minAlpha },
+  );
+}

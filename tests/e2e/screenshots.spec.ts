@@ -1,5 +1,6 @@
 /**
- * The documentation screenshots of stage 1 (docs/stage-*.png). Skipped unless SCREENSHOTS=1:
+ * The documentation screenshots of stage 1 and of the whole-shape mode (docs/stage-*.png). Skipped
+ * unless SCREENSHOTS=1:
  *   SCREENSHOTS=1 npx playwright test screenshots
  */
 import path from 'node:path';
@@ -37,6 +38,29 @@ for (const shot of SHOTS) {
     await expect(page.locator('body')).toHaveAttribute('data-separator-runs', '1', { timeout: 30_000 });
     for (let stage = 1; stage < shot.stage; stage++) await page.keyboard.press('ArrowRight');
     await expect(page.locator('body')).toHaveAttribute('data-stage', String(shot.stage));
+    await setView(page, shot.view);
+    await page.mouse.move(0, 0);
+    await page.waitForTimeout(300);
+    await page.screenshot({ path: path.join(repoRoot, 'docs', shot.file) });
+  });
+}
+
+/** The whole-shape views (N auto, seed 1), Spot from her right side. */
+const WHOLE_SHOTS: Array<{ file: string; stage: number; view: View }> = [
+  { file: 'stage-regions.png', stage: 3, view: { direction: [1, 0.35, -0.45], radius: 0.93 } },
+  { file: 'stage-skeleton.png', stage: 4, view: { direction: [1, 0.35, -0.45], radius: 0.93 } },
+];
+
+for (const shot of WHOLE_SHOTS) {
+  test(`screenshot ${shot.file}`, async ({ page }) => {
+    test.slow();
+    await page.goto('/');
+    await expect(page.locator('body')).toHaveAttribute('data-state', 'ready', { timeout: 60_000 });
+    await page.getByTestId('mode-whole').click();
+    await page.getByTestId('sk-compute').click();
+    await expect(page.locator('body')).toHaveAttribute('data-sk-run', 'done', { timeout: 120_000 });
+    for (let stage = 1; stage < shot.stage; stage++) await page.keyboard.press('ArrowRight');
+    await expect(page.locator('body')).toHaveAttribute('data-sk-stage', String(shot.stage));
     await setView(page, shot.view);
     await page.mouse.move(0, 0);
     await page.waitForTimeout(300);

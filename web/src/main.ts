@@ -1,8 +1,9 @@
 /**
- * Wiring: files -> worker (parse, inspect, prepare) -> viewer + panel; clicks -> worker (stage 1 of
- * CSCD-M from the picked vertex) -> layers shown stage by stage. `document.body.dataset.state` is
- * loading | ready | computing | error, `dataset.stage` the stage shown and `dataset.separatorRuns`
- * counts the stage-1 replies shown, for tests.
+ * Wiring: files -> worker (parse, inspect, prepare) -> viewer + panel. Two modes: "One source"
+ * (clicks -> worker: stage 1 of CSCD-M from the picked vertex -> layers shown stage by stage) and
+ * "Whole shape" (whole-shape.ts: the whole pipeline with progress and cancel -> skeleton views).
+ * `document.body.dataset.state` is loading | ready | computing | error, `dataset.mode` single | whole,
+ * `dataset.stage` the stage shown and `dataset.separatorRuns` counts the stage-1 replies shown, for tests.
  */
 import './style.css';
 import { defaultOptions } from '../../lib/core/options.ts';
@@ -17,6 +18,8 @@ import type { OpenedReply, SeparatorReply } from './worker/protocol.ts';
 import { installFileSources } from './ui/files.ts';
 import { Panel } from './ui/panel.ts';
 import { COLORS, LAYER_STAGE, STAGES, StagePanel } from './ui/stages.ts';
+import { SkeletonPanel } from './ui/skeleton-panel.ts';
+import { WholeShape, isSkeletonLayer } from './whole-shape.ts';
 
 const SAMPLE = 'samples/spot.ply';
 
@@ -27,6 +30,11 @@ const isolinesBox = document.querySelector<HTMLInputElement>('#opt-isolines')!;
 const targetSelect = document.querySelector<HTMLSelectElement>('#opt-target')!;
 const sphereBox = document.querySelector<HTMLInputElement>('#opt-sphere')!;
 const stagePanel = new StagePanel();
+const optionsHint = document.querySelector<HTMLElement>('#options-hint')!;
+const viewportHint = document.querySelector<HTMLElement>('#viewport-hint')!;
+
+type Mode = 'single' | 'whole';
+let mode: Mode = 'single';
 
 let opening = 0;
 let computing = 0;
@@ -77,11 +85,24 @@ const client = new GeometryClient({
         updateState();
       });
   },
+  // The worker was replaced to stop a cancelled run: the mesh is re-opened, no error to show.
+  onRestart: (restored) => {
+    opening++;
+    panel.setStatus('restarting the geometry worker…', true);
+    updateState();
+    restored
+      .catch((error: unknown) => fail('Could not re-open the mesh after the restart', error))
+      .finally(() => {
+        opening--;
+        updateState();
+      });
+  },
 });
 
 // -- opening meshes ------------------------------------------------------------------------------
 
 async function openBytes(fileName: string, bytes: ArrayBuffer): Promise<void> {
+  whole.cancel(); // a running skeleton would hold up the open
   opening++;
   startAction(`opening ${fileName}…`);
   updateState();
@@ -108,6 +129,7 @@ function showMesh(reply: OpenedReply): void {
   viewer.setLayer('surface', new SurfaceLayer(reply.positions, reply.triangles));
   viewer.surface!.setFlatShading(flatBox.checked);
   viewer.surface!.setIsolines(isolinesBox.checked);
+  whole.reset();
   viewer.frame();
 
   panel.setFile(reply.fileName, reply.format);
@@ -205,6 +227,13 @@ function showSeparator(reply: SeparatorReply): void {
   showStage(wantedStage);
 }
 
+/** The options the shown stage-1 run used differ from the current ones (changed in the other mode). */
+function separatorStale(): boolean {
+  if (!separator) return false;
+  const now = currentOptions();
+  return separator.options.target !== now.target || separator.options.sphere !== now.sphere;
+}
+
 function clearSeparator(): void {
   separator = null;
   for (const name of [...SEPARATOR_LAYERS, 'source']) viewer.setLayer(name, null);
@@ -220,7 +249,17 @@ function clearSeparator(): void {
 function showStage(wanted: number): void {
   if (!separator) return;
   stage = Math.min(Math.max(1, wanted), stagePanel.reachedStage, STAGES.length);
+  if (mode !== 'single') {
+    // A reply that arrived after the switch to the whole-shape mode: shown when the user comes back.
+    stagePanel.setStage(stage, separator, new Set(viewer.listLayers().map(([name]) => name)));
+    whole.apply();
+    return;
+  }
   for (const [name, layer] of viewer.listLayers()) {
+    if (isSkeletonLayer(name)) {
+      layer.object.visible = false;
+      continue;
+    }
     const introduced = LAYER_STAGE[name] ?? 1;
     layer.object.visible = introduced <= stage && !userHidden.has(name);
     // The source marker stays bright; the surface dims its colormap once lines are drawn on it.
@@ -240,10 +279,12 @@ stagePanel.onSelect = (wanted) => {
   showStage(wanted);
   wantedStage = stage;
 };
-viewer.onPick = (pick: Pick) => void runSeparator(pick.vertex);
+viewer.onPick = (pick: Pick) => {
+  if (mode === 'single') void runSeparator(pick.vertex);
+};
 
 function rerun(): void {
-  if (separator) void runSeparator(separator.separator.source);
+  if (separator && mode === 'single') void runSeparator(separator.separator.source);
 }
 targetSelect.addEventListener('change', rerun);
 sphereBox.addEventListener('change', rerun);
@@ -252,7 +293,18 @@ sphereBox.checked = defaultOptions.sphere;
 
 /** The layer list shows the layers of the stages up to the one shown. */
 function updateLayerList(): void {
-  const shown = viewer.listLayers().filter(([name]) => !separator || (LAYER_STAGE[name] ?? 1) <= stage);
+  if (mode === 'whole') {
+    panel.setLayers(whole.layerEntries(), (name, visible) => {
+      if (visible) userHidden.delete(name);
+      else userHidden.add(name);
+      if (name === 'surface') viewer.setLayerVisible(name, visible);
+      else whole.apply();
+    });
+    return;
+  }
+  const shown = viewer
+    .listLayers()
+    .filter(([name]) => !isSkeletonLayer(name) && (!separator || (LAYER_STAGE[name] ?? 1) <= stage));
   panel.setLayers(
     shown.map(([name, layer]) => ({
       name,
@@ -269,6 +321,75 @@ function updateLayerList(): void {
     },
   );
 }
+
+// -- whole shape ----------------------------------------------------------------------------------
+
+const whole = new WholeShape(
+  {
+    viewer,
+    client,
+    userHidden,
+    layerColors,
+    baseOptions: currentOptions,
+    begin: (status) => {
+      computing++;
+      startAction(status);
+      updateState();
+    },
+    end: () => {
+      computing--;
+      updateState();
+    },
+    fail,
+    setStatus: (text) => panel.setStatus(text, true),
+    updateLayerList,
+  },
+  new SkeletonPanel(defaultOptions),
+);
+
+const HINTS: Record<Mode, { viewport: string; options: string }> = {
+  single: {
+    viewport: 'Click the surface to run stage 1 from that vertex · ←/→ step through stages · drag to orbit · right-drag to pan · scroll to zoom',
+    options: 'Changes re-run stage 1 for the current source.',
+  },
+  whole: {
+    viewport: 'Compute the skeleton in the panel · ←/→ step through the views · drag to orbit · right-drag to pan · scroll to zoom',
+    options: 'Used by the next skeleton run (with N and the seed above).',
+  },
+};
+
+function setMode(next: Mode): void {
+  if (next === mode) return;
+  mode = next;
+  document.body.dataset.mode = mode;
+  for (const tab of document.querySelectorAll<HTMLButtonElement>('.mode-tab')) {
+    const selected = tab.dataset.mode === mode;
+    tab.classList.toggle('selected', selected);
+    tab.setAttribute('aria-selected', String(selected));
+  }
+  for (const section of document.querySelectorAll<HTMLElement>('[data-mode-section]')) section.hidden = section.dataset.modeSection !== mode;
+  viewportHint.textContent = HINTS[mode].viewport;
+  optionsHint.textContent = HINTS[mode].options;
+  stagePanel.enabled = mode === 'single';
+  if (mode === 'whole') {
+    whole.activate();
+    return;
+  }
+  whole.deactivate();
+  viewer.surface?.setScalarVisible(true);
+  if (separatorStale()) rerun();
+  if (separator) showStage(stage);
+  else {
+    for (const [name, layer] of viewer.listLayers()) if (isSkeletonLayer(name)) layer.object.visible = false;
+    updateLayerList();
+  }
+  viewer.requestRender();
+}
+
+for (const tab of document.querySelectorAll<HTMLButtonElement>('.mode-tab')) {
+  tab.addEventListener('click', () => setMode(tab.dataset.mode as Mode));
+}
+document.body.dataset.mode = mode;
 
 // -- panel controls ------------------------------------------------------------------------------
 
@@ -296,7 +417,7 @@ installFileSources({
 declare global {
   interface Window {
     cscd?: {
-      simulateCrash(how?: 'abort' | 'uncaught'): Promise<void>;
+      simulateCrash(how?: 'abort' | 'uncaught' | 'hang'): Promise<void>;
       projectVertex(index: number): { x: number; y: number } | null;
       /** Camera along `direction` (towards the camera) at a sphere around `center` (default: the mesh). */
       setView(view: { direction?: [number, number, number]; center?: [number, number, number]; radius?: number }): void;

@@ -129,6 +129,8 @@ function swatch(color: string, label: string): HTMLLIElement {
 export class StagePanel {
   /** Called when the user asks for another stage (buttons, pills, keys). */
   onSelect: ((stage: number) => void) | null = null;
+  /** Keys step the stages only while this mode is shown. */
+  enabled = true;
 
   private readonly prev = byTestId<HTMLButtonElement>('stage-prev');
   private readonly next = byTestId<HTMLButtonElement>('stage-next');
@@ -157,7 +159,7 @@ export class StagePanel {
     this.prev.addEventListener('click', () => this.onSelect?.(this.stage - 1));
     this.next.addEventListener('click', () => this.onSelect?.(this.stage + 1));
     document.addEventListener('keydown', (e) => {
-      if (e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey || byTestId('separator').hidden) return;
+      if (!this.enabled || e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey || byTestId('separator').hidden) return;
       const target = e.target as HTMLElement | null;
       if (target?.closest('input, select, textarea, [contenteditable="true"]')) return;
       if (e.key === 'ArrowRight') this.onSelect?.(this.stage + 1);

@@ -19,6 +19,8 @@ export const DIM_GREY = new THREE.Color(0x8f8b84);
 export const DIM_MIX = 0.62;
 
 const BASE_COLOR = 0xc4c0b8;
+/** The surface's colour while translucent: cool and light, so a warm skeleton inside stands out. */
+const TRANSLUCENT_COLOR = 0xdfe8f5;
 
 /** Values below this in the scalar attribute mean "no value" (drawn in the base colour). */
 const NO_VALUE = -1;
@@ -50,7 +52,12 @@ export class SurfaceLayer implements Layer {
     regionRadius: { value: 0 },
     regionTint: { value: new THREE.Color(0x6fa8ff) },
     regionStrength: { value: 0 },
+    /** 0..1: how much the per-vertex `regionColor` replaces the surface colour. */
+    regionColorMix: { value: 0 },
+    /** 1: see-through, more opaque where the surface is seen edge-on (the skeleton shows inside). */
+    translucent: { value: 0 },
   };
+  private scalarShown = true;
   private grid: VertexGrid | null = null;
   private isolines = true;
   private field: ScalarField | null = null;
@@ -59,6 +66,7 @@ export class SurfaceLayer implements Layer {
     this.geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
     this.geometry.setIndex(new THREE.BufferAttribute(triangles, 1));
     this.geometry.setAttribute('scalar', new THREE.BufferAttribute(new Float32Array(positions.length / 3).fill(NO_VALUE), 1));
+    this.geometry.setAttribute('regionColor', new THREE.BufferAttribute(new Float32Array(positions.length), 3));
     this.geometry.computeVertexNormals();
     this.geometry.computeBoundingSphere();
 
@@ -74,8 +82,14 @@ export class SurfaceLayer implements Layer {
     material.onBeforeCompile = (shader) => {
       Object.assign(shader.uniforms, this.uniforms);
       shader.vertexShader = shader.vertexShader
-        .replace('#include <common>', '#include <common>\nattribute float scalar;\nvarying float vScalar;\nvarying vec3 vWorld;')
-        .replace('#include <begin_vertex>', '#include <begin_vertex>\nvScalar = scalar;\nvWorld = (modelMatrix * vec4(transformed, 1.0)).xyz;');
+        .replace(
+          '#include <common>',
+          '#include <common>\nattribute float scalar;\nattribute vec3 regionColor;\nvarying float vScalar;\nvarying vec3 vWorld;\nvarying vec3 vRegionColor;',
+        )
+        .replace(
+          '#include <begin_vertex>',
+          '#include <begin_vertex>\nvScalar = scalar;\nvRegionColor = regionColor;\nvWorld = (modelMatrix * vec4(transformed, 1.0)).xyz;',
+        );
       shader.fragmentShader = shader.fragmentShader
         .replace(
           '#include <common>',
@@ -89,8 +103,11 @@ uniform vec3 regionCenter;
 uniform float regionRadius;
 uniform vec3 regionTint;
 uniform float regionStrength;
+uniform float regionColorMix;
+uniform float translucent;
 varying float vScalar;
-varying vec3 vWorld;`,
+varying vec3 vWorld;
+varying vec3 vRegionColor;`,
         )
         .replace(
           '#include <color_fragment>',
@@ -118,7 +135,17 @@ if (regionRadius > 0.0 && regionStrength > 0.0) {
   float edge = 1.0 - smoothstep(1.0 * w, 2.5 * w, abs(r));
   diffuseColor.rgb = mix(diffuseColor.rgb, diffuseColor.rgb * 0.55 + regionTint * 0.45, inside * regionStrength * 0.8);
   diffuseColor.rgb = mix(diffuseColor.rgb, regionTint * 0.35, edge * regionStrength);
-}`,
+}
+if (regionColorMix > 0.0) diffuseColor.rgb = mix(diffuseColor.rgb, vRegionColor, regionColorMix);`,
+        )
+        .replace(
+          '#include <opaque_fragment>',
+          `if (translucent > 0.0) {
+  // X-ray look: faint where the surface faces the camera, denser towards the silhouette.
+  float facing = abs(dot(normalize(normal), normalize(vViewPosition)));
+  diffuseColor.a = mix(0.62, 0.07, smoothstep(0.0, 0.9, facing));
+}
+#include <opaque_fragment>`,
         );
     };
     material.customProgramCacheKey = () => 'cscd-scalar-surface';
@@ -160,6 +187,42 @@ if (regionRadius > 0.0 && regionStrength > 0.0) {
     this.uniforms.scalarDim.value = dimmed ? 1 : 0;
   }
 
+  /**
+   * Colours the surface per vertex (linear RGB, three per vertex; e.g. one colour per skeleton
+   * region), over the scalar field and the base colour; null: back to those.
+   */
+  setRegionColors(colors: Float32Array | null, mix = 1): void {
+    if (colors) {
+      const attribute = this.geometry.getAttribute('regionColor') as THREE.BufferAttribute;
+      (attribute.array as Float32Array).set(colors.subarray(0, attribute.array.length));
+      attribute.needsUpdate = true;
+    }
+    this.uniforms.regionColorMix.value = colors ? mix : 0;
+  }
+
+  /** Shows the colour mix of the last `setRegionColors` again at `mix` (0: hidden), keeping the colours. */
+  setRegionColorMix(mix: number): void {
+    this.uniforms.regionColorMix.value = mix;
+  }
+
+  /** See-through surface (so lines and spheres inside it show), or opaque again. */
+  setTranslucent(on: boolean): void {
+    const material = this.object.material;
+    if (material.transparent === on) return;
+    material.transparent = on;
+    material.depthWrite = !on;
+    material.color.set(on ? TRANSLUCENT_COLOR : BASE_COLOR);
+    material.needsUpdate = true;
+    this.uniforms.translucent.value = on ? 1 : 0;
+  }
+
+  /** Hides the scalar field (another mode colours the surface) or shows it again; keeps its values. */
+  setScalarVisible(visible: boolean): void {
+    this.scalarShown = visible;
+    this.uniforms.scalarMax.value = visible && this.field ? this.field.max : 0;
+    this.updateIsolines();
+  }
+
   setScalarField(field: ScalarField | null): void {
     this.field = field;
     const attribute = this.geometry.getAttribute('scalar') as THREE.BufferAttribute;
@@ -171,7 +234,7 @@ if (regionRadius > 0.0 && regionStrength > 0.0) {
       (attribute.array as Float32Array).fill(NO_VALUE);
     }
     attribute.needsUpdate = true;
-    this.uniforms.scalarMax.value = field ? field.max : 0;
+    this.uniforms.scalarMax.value = field && this.scalarShown ? field.max : 0;
     this.updateIsolines();
   }
 
@@ -186,7 +249,7 @@ if (regionRadius > 0.0 && regionStrength > 0.0) {
   }
 
   private updateIsolines(): void {
-    this.uniforms.isoSpacing.value = this.isolines && this.field ? this.field.isolineSpacing : 0;
+    this.uniforms.isoSpacing.value = this.isolines && this.field && this.scalarShown ? this.field.isolineSpacing : 0;
   }
 
   dispose(): void {

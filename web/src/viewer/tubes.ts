@@ -10,6 +10,12 @@ const Y = new THREE.Vector3(0, 1, 0);
 /** Unit cylinder from y = 0 to y = 1, open ended (the joint balls close it). */
 const cylinder = new THREE.CylinderGeometry(1, 1, 1, 14, 1, true).translate(0, 0.5, 0);
 const ball = new THREE.SphereGeometry(1, 16, 10);
+/**
+ * Coarser versions for layers of many thin tubes (hundreds of loops, a few pixels wide on screen):
+ * the software renderers of headless browsers and weak machines draw millions of triangles slowly.
+ */
+const lowCylinder = new THREE.CylinderGeometry(1, 1, 1, 5, 1, true).translate(0, 0.5, 0);
+const lowBall = new THREE.SphereGeometry(1, 5, 3);
 
 export interface TubeStyle {
   color: THREE.ColorRepresentation;
@@ -18,6 +24,8 @@ export interface TubeStyle {
   jointRadius?: number;
   /** Glow (emissive) so the colour reads the same on the lit and the shaded side. */
   glow?: number;
+  /** 'low': coarse cylinders and balls, for layers of many thin tubes. */
+  detail?: 'high' | 'low';
 }
 
 /** Tubes along segments: `segments` holds two xyz points per segment, `joints` xyz points for balls. */
@@ -51,7 +59,8 @@ export class TubesLayer implements Layer {
     const m = new THREE.Matrix4();
 
     const count = Math.floor(segments.length / 6);
-    const tubes = new THREE.InstancedMesh(cylinder, this.material, Math.max(count, 1));
+    const low = style.detail === 'low';
+    const tubes = new THREE.InstancedMesh(low ? lowCylinder : cylinder, this.material, Math.max(count, 1));
     let used = 0;
     for (let i = 0; i < count; i++) {
       a.fromArray(segments as number[], 6 * i);
@@ -68,7 +77,7 @@ export class TubesLayer implements Layer {
 
     const jointCount = Math.floor(joints.length / 3);
     const jr = style.jointRadius ?? r;
-    const balls = new THREE.InstancedMesh(ball, this.material, Math.max(jointCount, 1));
+    const balls = new THREE.InstancedMesh(low ? lowBall : ball, this.material, Math.max(jointCount, 1));
     for (let i = 0; i < jointCount; i++) {
       m.compose(a.fromArray(joints as number[], 3 * i), q.identity(), scale.set(jr, jr, jr));
       balls.setMatrixAt(i, m);

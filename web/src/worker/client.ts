@@ -4,11 +4,16 @@
  * When the worker dies or reports a crash (WASM abort), every pending request is rejected with a
  * WorkerError of kind `crash`, the worker is replaced and the last successfully opened mesh is re-opened in
  * the new one from bytes kept here. Requests made meanwhile queue behind that re-open.
+ *
+ * A skeleton run is a job that can be cancelled: the worker stops it between two steps; when it has
+ * not answered within CANCEL_GRACE_MS (a step that takes long or hangs), the worker is replaced the
+ * same way, without counting as a crash.
  */
 import type { Options } from '../../../lib/core/types.ts';
 import {
   type ErrorKind,
   type OpenedReply,
+  type PipelineNews,
   type ProgressEvent,
   type ReplyFor,
   type WorkerMessage,
@@ -31,6 +36,18 @@ export interface ClientHooks {
   onProgress?(event: ProgressEvent): void;
   /** The worker died: `message` says why; `restored` settles when the new worker has the mesh again. */
   onCrash?(message: string, restored: Promise<OpenedReply | null>): void;
+  /** The worker was replaced to stop a cancelled job that did not stop in time (not an error). */
+  onRestart?(restored: Promise<OpenedReply | null>): void;
+}
+
+/** A running skeleton computation. */
+export interface SkeletonJob {
+  readonly result: Promise<ReplyFor['skeleton']>;
+  /**
+   * Stops it: `result` rejects with a WorkerError of kind `cancelled`. The worker stops between two
+   * steps; if it has not answered within CANCEL_GRACE_MS it is replaced.
+   */
+  cancel(): void;
 }
 
 interface Pending {
@@ -45,10 +62,15 @@ type RequestBody = WithoutId<WorkerRequest>;
 /** Give up restarting after this many crashes in a row without a successful reply in between. */
 const MAX_CONSECUTIVE_CRASHES = 3;
 
+/** How long a cancelled job may take to stop before the worker is terminated. */
+export const CANCEL_GRACE_MS = 2500;
+
 export class GeometryClient {
   private worker: Worker;
   private nextId = 1;
   private readonly pending = new Map<number, Pending>();
+  /** Pipeline news listeners of running skeleton jobs, by request id. */
+  private readonly news = new Map<number, (news: PipelineNews, event: ProgressEvent) => void>();
   /** The last mesh the worker opened successfully, to re-open after a crash. */
   private current: { fileName: string; bytes: ArrayBuffer } | null = null;
   private crashes = 0;
@@ -75,8 +97,30 @@ export class GeometryClient {
     return this.request({ type: 'separator', source, options });
   }
 
-  /** Test hook: the worker fails as if the WASM core had aborted, or dies of an uncaught error. */
-  simulateCrash(how: 'abort' | 'uncaught' = 'abort'): Promise<never> {
+  /**
+   * The whole pipeline on the open mesh with options differing from the defaults; `onNews` gets the
+   * progress (sources done / total and the new loops) after every step.
+   */
+  skeleton(options: Partial<Options>, onNews?: (news: PipelineNews, event: ProgressEvent) => void): SkeletonJob {
+    const id = this.nextId;
+    if (onNews) this.news.set(id, onNews);
+    const result = this.request({ type: 'skeleton', options }).finally(() => this.news.delete(id));
+    let cancelled = false;
+    const cancel = () => {
+      if (cancelled || !this.pending.has(id)) return;
+      cancelled = true;
+      this.news.delete(id);
+      this.worker.postMessage({ type: 'cancel', id });
+      const worker = this.worker;
+      setTimeout(() => {
+        if (this.pending.has(id) && this.worker === worker) this.replace('The computation was cancelled.', 'cancel');
+      }, CANCEL_GRACE_MS);
+    };
+    return { result, cancel };
+  }
+
+  /** Test hook: the worker fails as if the WASM core had aborted, dies of an uncaught error, or hangs. */
+  simulateCrash(how: 'abort' | 'uncaught' | 'hang' = 'abort'): Promise<never> {
     return this.request({ type: 'crash', how });
   }
 
@@ -109,6 +153,7 @@ export class GeometryClient {
   private receive(message: WorkerMessage): void {
     if (message.type === 'progress') {
       this.hooks.onProgress?.(message);
+      if (message.pipeline) this.news.get(message.id)?.(message.pipeline, message);
       return;
     }
     const pending = this.pending.get(message.id);
@@ -123,17 +168,23 @@ export class GeometryClient {
     }
   }
 
-  private rejectAll(message: string): void {
+  private rejectAll(message: string, kind: ErrorKind = 'crash'): void {
     const pending = [...this.pending.values()];
     this.pending.clear();
-    for (const p of pending) p.reject(new WorkerError('crash', message));
+    this.news.clear();
+    for (const p of pending) p.reject(new WorkerError(kind, message));
   }
 
   private crash(message: string): void {
+    this.replace(message, 'crash');
+  }
+
+  /** Terminates the worker, fails what it had pending, starts a new one and re-opens the mesh in it. */
+  private replace(message: string, why: 'crash' | 'cancel'): void {
     if (this.dead) return;
     this.worker.terminate();
-    this.rejectAll(message);
-    this.crashes++;
+    this.rejectAll(message, why === 'crash' ? 'crash' : 'cancelled');
+    if (why === 'crash') this.crashes++;
     if (this.crashes > MAX_CONSECUTIVE_CRASHES) {
       this.dead = true;
       const final = `${message} The geometry worker keeps failing; reload the page.`;
@@ -147,6 +198,7 @@ export class GeometryClient {
       const copy = bytes.slice(0);
       restored = this.request({ type: 'open', fileName, bytes: copy, withArrays: false }, [copy]);
     }
-    this.hooks.onCrash?.(message, restored);
+    if (why === 'crash') this.hooks.onCrash?.(message, restored);
+    else this.hooks.onRestart?.(restored);
   }
 }

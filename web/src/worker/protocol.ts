@@ -5,7 +5,7 @@
  * or an `error` with the same id, and may send `progress` events for it before that. Large arrays
  * travel in transfer lists in both directions (see `transferables`).
  */
-import type { MeshFacts, Options, Separator } from '../../../lib/core/types.ts';
+import type { MeshFacts, Options, Separator, Skeleton } from '../../../lib/core/types.ts';
 import type { MeshFormat } from '../../../lib/io/types.ts';
 
 // ---------------------------------------------------------------------------------------------
@@ -43,15 +43,38 @@ export interface SeparatorRequest {
 
 /**
  * Test hook: `abort` fails the request as a WASM abort would (an error reply of kind `crash`);
- * `uncaught` throws outside any request, which the page sees as the Worker's `error` event.
+ * `uncaught` throws outside any request, which the page sees as the Worker's `error` event;
+ * `hang` keeps the worker busy for a minute without yielding (a step that never ends).
  */
 export interface CrashRequest {
   type: 'crash';
   id: number;
-  how: 'abort' | 'uncaught';
+  how: 'abort' | 'uncaught' | 'hang';
 }
 
-export type WorkerRequest = OpenRequest | DistanceRequest | SeparatorRequest | CrashRequest;
+/**
+ * The whole CSCD-M pipeline (stage 1 from N sources, then stage 2) on the open mesh. The worker runs
+ * it a few sources at a time, sends a `progress` event with `pipeline` news after every step and
+ * answers with a `skeleton` reply, or an `error` of kind `cancelled` after a `cancel`.
+ */
+export interface SkeletonRequest {
+  type: 'skeleton';
+  id: number;
+  /** Options that differ from `defaultOptions` (n, seed, pruneLengthFactor, and the stage-1 ones). */
+  options: Partial<Options>;
+}
+
+/**
+ * Asks the worker to stop the `skeleton` request with this `id` between two steps. It has no reply of
+ * its own: the request it names answers with an `error` of kind `cancelled` (or with its result, when
+ * it had already finished). Unlike every other request it is handled at once, not queued.
+ */
+export interface CancelRequest {
+  type: 'cancel';
+  id: number;
+}
+
+export type WorkerRequest = OpenRequest | DistanceRequest | SeparatorRequest | SkeletonRequest | CancelRequest | CrashRequest;
 
 // ---------------------------------------------------------------------------------------------
 // Worker -> page
@@ -114,12 +137,30 @@ export interface SeparatorReply {
   timings: { separatorMs: number };
 }
 
+/** A Skeleton as it travels to the page: float32 arrays for the GPU, every buffer transferred. */
+export interface SkeletonData extends Omit<Skeleton, 'nodes' | 'radii' | 'candidates'> {
+  nodes: Float32Array;
+  radii: Float32Array;
+  candidates: Omit<Skeleton['candidates'], 'loops'> & { loops: Float32Array[] };
+}
+
+export interface SkeletonReply {
+  type: 'skeleton';
+  id: number;
+  skeleton: SkeletonData;
+  /** The options the run used (defaults filled in). */
+  options: Options;
+  /** Wall times in the worker: all steps of stage 1, stage 2 (`finish`), and the sizes of the steps. */
+  timings: { stage1Ms: number; stage2Ms: number; steps: number };
+}
+
 /**
  * `format`: the file is not a readable mesh; `core`: the core refused the input or computation;
  * both leave the worker usable. `crash`: the WASM core aborted or the worker hit an unexpected
- * error; its state is lost and the page must replace it.
+ * error; its state is lost and the page must replace it. `cancelled`: the request was cancelled
+ * (the worker is fine).
  */
-export type ErrorKind = 'format' | 'core' | 'crash';
+export type ErrorKind = 'format' | 'core' | 'crash' | 'cancelled';
 
 export interface ErrorReply {
   type: 'error';
@@ -128,7 +169,16 @@ export interface ErrorReply {
   message: string;
 }
 
-export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'distance' | 'separator';
+export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'distance' | 'separator' | 'sources' | 'stage2';
+
+/** News of a pipeline run after one step (PipelineProgress with float32 loops, transferred). */
+export interface PipelineNews {
+  done: number;
+  total: number;
+  finished: boolean;
+  /** The loops found by this step's sources (empty for failed sources), xyz triples, closed. */
+  newLoops: Float32Array[];
+}
 
 /** Intermediate news about a request; `fraction` in [0, 1] when the stage can measure itself. */
 export interface ProgressEvent {
@@ -137,9 +187,11 @@ export interface ProgressEvent {
   stage: ProgressStage;
   message: string;
   fraction?: number;
+  /** Set on the `sources` events of a skeleton request. */
+  pipeline?: PipelineNews;
 }
 
-export type WorkerReply = OpenedReply | DistanceReply | SeparatorReply | ErrorReply;
+export type WorkerReply = OpenedReply | DistanceReply | SeparatorReply | SkeletonReply | ErrorReply;
 export type WorkerMessage = WorkerReply | ProgressEvent;
 
 /** The reply type that answers each request type. */
@@ -147,6 +199,8 @@ export interface ReplyFor {
   open: OpenedReply;
   distance: DistanceReply;
   separator: SeparatorReply;
+  skeleton: SkeletonReply;
+  cancel: never;
   crash: never;
 }
 

@@ -5,7 +5,7 @@
  */
 import { createCore } from '../../../lib/core/index.ts';
 import { defaultOptions } from '../../../lib/core/options.ts';
-import type { Core, Options, Separator, Surface } from '../../../lib/core/types.ts';
+import type { Core, Options, Pipeline, Separator, Skeleton, Surface } from '../../../lib/core/types.ts';
 import { parseMesh } from '../../../lib/io/index.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
 import {
@@ -16,6 +16,8 @@ import {
   type ProgressStage,
   type SeparatorData,
   type SeparatorRequest,
+  type SkeletonData,
+  type SkeletonRequest,
   type WorkerMessage,
   type WorkerRequest,
 } from './protocol.ts';
@@ -204,6 +206,106 @@ function separator(request: SeparatorRequest): void {
   );
 }
 
+// -- the whole pipeline -----------------------------------------------------------------------------
+
+/** Wall time one step should take: long enough to amortise the messages, short enough to cancel. */
+const STEP_TARGET_MS = 150;
+const STEP_MAX_SOURCES = 64;
+
+/** Skeleton requests received and not yet answered, and those of them asked to stop. */
+const skeletonRequests = new Set<number>();
+const cancelRequested = new Set<number>();
+
+class Cancelled extends UserError {
+  constructor() {
+    super('cancelled', 'The computation was cancelled.');
+  }
+}
+
+/** Lets messages (a `cancel`) in between two steps. */
+const yieldToEvents = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
+
+/** The next step's size: scaled towards STEP_TARGET_MS by the last step's time, at most x4 per step. */
+function nextStepSize(k: number, ms: number): number {
+  if (!(ms > 0)) return Math.min(k * 4, STEP_MAX_SOURCES);
+  const scaled = Math.floor((k * STEP_TARGET_MS) / ms);
+  return Math.max(1, Math.min(scaled, k * 4, STEP_MAX_SOURCES));
+}
+
+function skeletonToWire(s: Skeleton): SkeletonData {
+  return {
+    ...s,
+    nodes: f32(s.nodes),
+    radii: f32(s.radii),
+    edges: Uint32Array.from(s.edges ?? []),
+    vertexToNode: Uint32Array.from(s.vertexToNode ?? []),
+    packed: Uint32Array.from(s.packed ?? []),
+    candidates: {
+      sources: Uint32Array.from(s.candidates.sources ?? []),
+      loops: (s.candidates.loops ?? []).map(f32),
+      scores: Float64Array.from(s.candidates.scores ?? []),
+      fates: [...(s.candidates.fates ?? [])],
+    },
+    stats: { ...s.stats, timings: { ...s.stats.timings } },
+  };
+}
+
+async function skeleton(request: SkeletonRequest): Promise<void> {
+  const { id } = request;
+  const check = () => {
+    if (cancelRequested.has(id)) throw new Cancelled();
+  };
+  check();
+  if (!current) throw new UserError('core', 'No mesh is open.');
+  if (!current.surface) throw new UserError('core', `The skeleton is not available on this mesh: ${current.surfaceError}`);
+  const options: Options = { ...defaultOptions, ...request.options };
+  progress(id, 'sources', 'stage 1: starting…');
+  let pipeline: Pipeline | null = current.surface.pipeline(options);
+  try {
+    let k = 1;
+    let steps = 0;
+    let stage1Ms = 0;
+    for (;;) {
+      await yieldToEvents();
+      check();
+      const t = performance.now();
+      const p = pipeline.step(k);
+      const ms = performance.now() - t;
+      stage1Ms += ms;
+      steps++;
+      const newLoops = (p.newLoops ?? []).map(f32);
+      post(
+        {
+          type: 'progress',
+          id,
+          stage: 'sources',
+          message: `stage 1: ${p.done} / ${p.total} sources`,
+          fraction: p.total > 0 ? p.done / p.total : undefined,
+          pipeline: { done: p.done, total: p.total, finished: p.finished, newLoops },
+        },
+        transferables(...newLoops),
+      );
+      if (p.finished || (p.total > 0 && p.done >= p.total)) break;
+      k = nextStepSize(k, ms);
+    }
+    await yieldToEvents();
+    check();
+    progress(id, 'stage2', 'stage 2: pruning, packing, regions, skeleton…');
+    const t = performance.now();
+    const result = pipeline.finish();
+    const stage2Ms = performance.now() - t;
+    const data = skeletonToWire(result);
+    const c = data.candidates;
+    post(
+      { type: 'skeleton', id, skeleton: data, options, timings: { stage1Ms, stage2Ms, steps } },
+      transferables(data.nodes, data.radii, data.edges, data.vertexToNode, data.packed, c.sources, c.scores, ...c.loops),
+    );
+  } finally {
+    pipeline.dispose();
+    pipeline = null;
+  }
+}
+
 async function handle(request: WorkerRequest): Promise<void> {
   try {
     switch (request.type) {
@@ -213,7 +315,18 @@ async function handle(request: WorkerRequest): Promise<void> {
         return distance(request);
       case 'separator':
         return separator(request);
+      case 'skeleton':
+        return await skeleton(request);
+      case 'cancel':
+        return; // handled on arrival
       case 'crash':
+        if (request.how === 'hang') {
+          const end = performance.now() + 60_000;
+          while (performance.now() < end) {
+            // busy, as a runaway WASM loop would be: no message gets in
+          }
+          throw new WebAssembly.RuntimeError('simulated hang ended');
+        }
         if (request.how === 'uncaught') {
           setTimeout(() => {
             throw new Error('simulated uncaught error');
@@ -224,12 +337,23 @@ async function handle(request: WorkerRequest): Promise<void> {
     }
   } catch (error) {
     post({ type: 'error', id: request.id, ...classify(error) });
+  } finally {
+    if (request.type === 'skeleton') {
+      skeletonRequests.delete(request.id);
+      cancelRequested.delete(request.id);
+    }
   }
 }
 
-// One request at a time, in arrival order (open may await the core).
+// One request at a time, in arrival order (open may await the core; a skeleton run yields between
+// its steps). A cancel is not queued: it marks its skeleton request, which stops at its next step.
 let queue: Promise<void> = Promise.resolve();
 self.onmessage = (event: MessageEvent<WorkerRequest>) => {
   const request = event.data;
+  if (request.type === 'cancel') {
+    if (skeletonRequests.has(request.id)) cancelRequested.add(request.id);
+    return;
+  }
+  if (request.type === 'skeleton') skeletonRequests.add(request.id);
   queue = queue.then(() => handle(request));
 };

@@ -1,0 +1,207 @@
+/**
+ * The whole-shape mode: the pipeline runs in the worker with a progress bar, its result is stepped
+ * through (Candidates, Packing, Regions, Skeleton) with each view drawing its layers, and a run can
+ * be cancelled without harming the page.
+ */
+import { expect, test, type Page } from '@playwright/test';
+import { canvasStats, clickMesh, frameDifference, hueCensus } from './pixels.ts';
+
+/** Hue ranges (degrees) of the whole-shape layers (web/src/ui/skeleton-panel.ts SK_COLORS). */
+const HUES = {
+  packed: [[175, 200]], // #00e1ff
+  rejected: [[318, 346]], // #ff4f9a
+  skeleton: [[5, 45]], // nodes #ff6a2b, edges #ffb02e
+} as const;
+
+const body = (page: Page) => page.locator('body');
+
+async function waitForState(page: Page, state: string): Promise<void> {
+  await expect(body(page)).toHaveAttribute('data-state', state, { timeout: 60_000 });
+}
+
+/** Opens the sample and switches to the whole-shape mode with N sources. */
+async function openWhole(page: Page, n: number): Promise<void> {
+  await page.goto('/');
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('facts-vertices')).toHaveText('2930');
+  await page.getByTestId('mode-whole').click();
+  await expect(body(page)).toHaveAttribute('data-mode', 'whole');
+  await expect(page.getByTestId('sk-compute')).toBeVisible();
+  await expect(page.getByTestId('separator')).toBeHidden();
+  await page.getByTestId('opt-n-auto').uncheck();
+  await page.getByTestId('opt-n').fill(String(n));
+}
+
+/** Records every value the progress bar shows ("done/total"), from the page itself. */
+async function recordProgress(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    const bar = document.querySelector<HTMLElement>('[data-testid="sk-progress"]')!;
+    const seen: string[] = [];
+    (window as unknown as { progressSeen: string[] }).progressSeen = seen;
+    new MutationObserver(() => seen.push(`${bar.dataset.done}/${bar.dataset.total}`)).observe(bar, {
+      attributes: true,
+      attributeFilter: ['data-done', 'data-total'],
+    });
+  });
+}
+
+const progressSeen = (page: Page) => page.evaluate(() => (window as unknown as { progressSeen: string[] }).progressSeen);
+
+const layerBox = (page: Page, name: string) => page.locator(`#layers input[data-layer="${name}"]`);
+
+async function expectView(page: Page, stage: number, title: string): Promise<void> {
+  await expect(body(page)).toHaveAttribute('data-sk-stage', String(stage));
+  await expect(page.getByTestId('sk-stage-title')).toHaveText(title);
+  await expect(page.getByTestId('sk-stage-caption')).not.toBeEmpty();
+  await waitForState(page, 'ready');
+}
+
+const figure = async (page: Page, id: string) => Number((await page.getByTestId(id).textContent())?.match(/^\d+/)?.[0] ?? NaN);
+
+test('Compute skeleton shows progress, then candidates, packing, regions and the skeleton', async ({ page }) => {
+  test.slow(); // a pipeline run and a dozen pixel reads on a software renderer
+  await openWhole(page, 20);
+  const plain = await canvasStats(page);
+  await recordProgress(page);
+  await page.getByTestId('sk-compute').click();
+  await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
+  await waitForState(page, 'ready');
+
+  // The bar advanced through several values up to 20 / 20.
+  const seen = [...new Set(await progressSeen(page))];
+  const done = seen.map((v) => Number(v.split('/')[0])).filter((d) => d > 0);
+  expect(new Set(done).size, `distinct progress values seen: ${seen.join(' ')}`).toBeGreaterThanOrEqual(2);
+  expect(seen).toContain('20/20');
+  expect(done, 'progress never goes back').toEqual([...done].sort((a, b) => a - b));
+  await expect(page.getByTestId('sk-progress')).toBeHidden();
+  await expect(page.getByTestId('sk-status')).toHaveAttribute('data-status', 'done');
+
+  // The figures.
+  await expect(page.getByTestId('sk-n')).toHaveText('20');
+  await expect(page.getByTestId('sk-seed')).toHaveText('1');
+  const nodes = await figure(page, 'sk-nodes');
+  const edges = await figure(page, 'sk-edges');
+  const packed = await figure(page, 'sk-packed');
+  const candidates = await figure(page, 'sk-candidates');
+  expect(nodes, 'skeleton nodes').toBeGreaterThan(1);
+  expect(edges, 'skeleton edges').toBeGreaterThanOrEqual(1);
+  expect(packed, 'packed loops').toBeGreaterThanOrEqual(1);
+  expect(candidates, 'candidates').toBeGreaterThanOrEqual(packed);
+  expect(candidates).toBeLessThanOrEqual(20);
+  expect(await figure(page, 'sk-pruned')).toBeGreaterThanOrEqual(0);
+  expect(await figure(page, 'sk-cycles')).toBeGreaterThanOrEqual(0);
+  expect(await figure(page, 'sk-regions')).toBeGreaterThan(1);
+  await expect(page.getByTestId('sk-timing-stage1')).toHaveText(/\d+(\.\d)? (ms|s)/);
+  await expect(page.getByTestId('sk-timing-stage2')).toHaveText(/\d+(\.\d)? (ms|s)/);
+
+  // 1. Candidates: packed loops in cyan, the rejected ones in pink.
+  await expectView(page, 1, 'Candidates');
+  await expect(page.getByTestId('sk-prev')).toBeDisabled();
+  const candidatesView = await hueCensus(page, HUES);
+  expect(candidatesView.counts.packed, 'cyan pixels of the packed loops').toBeGreaterThan(150);
+  if (candidates > packed) expect(candidatesView.counts.rejected, 'pink pixels of the rejected loops').toBeGreaterThan(50);
+  await expect(page.getByTestId('sk-stage-legend')).toContainText('packed');
+
+  // 2. Packing: only the packed loops.
+  await page.getByTestId('sk-next').click();
+  await expectView(page, 2, 'Packing');
+  const packingView = await hueCensus(page, HUES);
+  expect(packingView.counts.packed).toBeGreaterThan(150);
+  expect(packingView.counts.rejected, 'no rejected loops any more').toBeLessThan(Math.max(20, candidatesView.counts.rejected * 0.1));
+  await expect(layerBox(page, 'sk-rejected')).toHaveCount(0);
+
+  // 3. Regions: the surface in many distinct colours.
+  await page.keyboard.press('ArrowRight');
+  await expectView(page, 3, 'Regions');
+  const regions = await canvasStats(page);
+  expect(regions.saturatedFraction, 'the surface is coloured by region').toBeGreaterThan(0.5);
+  expect(regions.hueBins, 'regions in many hues').toBeGreaterThanOrEqual(Math.min(5, nodes));
+  expect(frameDifference(plain, regions), 'the picture changed').toBeGreaterThan(15);
+
+  // 4. Skeleton: warm spheres and tubes inside a see-through mesh.
+  await page.getByTestId('sk-next').click();
+  await expectView(page, 4, 'Skeleton');
+  await expect(page.getByTestId('sk-next')).toBeDisabled();
+  const skeleton = await hueCensus(page, HUES);
+  const { width, height } = await canvasStats(page);
+  expect(skeleton.counts.skeleton, 'orange pixels of the skeleton').toBeGreaterThan(300);
+  expect(skeleton.translucent, 'the see-through mesh covers much of the view').toBeGreaterThan(0.05 * width * height);
+  await layerBox(page, 'sk-nodes').uncheck();
+  await layerBox(page, 'sk-edges').uncheck();
+  const withoutSkeleton = await hueCensus(page, HUES);
+  expect(withoutSkeleton.counts.skeleton, 'the orange is the skeleton layers').toBeLessThan(skeleton.counts.skeleton * 0.2);
+  expect(withoutSkeleton.translucent, 'the mesh stays').toBeGreaterThan(skeleton.translucent * 0.8);
+  await layerBox(page, 'sk-nodes').check();
+  await layerBox(page, 'sk-edges').check();
+
+  // Back to the single-source mode: its hint, no skeleton layers, an opaque mesh, and clicks work.
+  await page.getByTestId('mode-single').click();
+  await expect(body(page)).toHaveAttribute('data-mode', 'single');
+  await waitForState(page, 'ready');
+  const single = await canvasStats(page);
+  expect(frameDifference(plain, single), 'the plain mesh again').toBeLessThan(2);
+  await clickMesh(page, single);
+  await expect(body(page)).toHaveAttribute('data-separator-runs', '1', { timeout: 30_000 });
+  await waitForState(page, 'ready');
+  expect((await canvasStats(page)).hueBins, 'the distance colormap').toBeGreaterThanOrEqual(5);
+
+  // And to the whole shape again: the skeleton view as it was left.
+  await page.getByTestId('mode-whole').click();
+  await expectView(page, 4, 'Skeleton');
+  expect((await hueCensus(page, HUES)).counts.skeleton).toBeGreaterThan(300);
+});
+
+test('a skeleton run can be cancelled and the page stays usable', async ({ page }) => {
+  test.slow();
+  await openWhole(page, 400);
+  await page.getByTestId('sk-compute').click();
+  await expect(body(page)).toHaveAttribute('data-sk-run', 'running');
+  await expect(page.getByTestId('sk-progress')).toBeVisible();
+  await expect.poll(async () => Number(await page.getByTestId('sk-progress').getAttribute('data-done')), { timeout: 30_000 }).toBeGreaterThan(0);
+  await expect(page.getByTestId('sk-progress')).toHaveAttribute('data-total', '400');
+  await expect(page.getByTestId('sk-compute')).toBeDisabled();
+  await page.getByTestId('sk-cancel').click();
+
+  await expect(body(page)).toHaveAttribute('data-sk-run', 'cancelled', { timeout: 10_000 });
+  await expect(page.getByTestId('sk-status')).toContainText('Cancelled');
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('error')).toBeHidden();
+  await expect(page.getByTestId('sk-cancel')).toBeHidden();
+  await expect(page.getByTestId('sk-compute')).toBeEnabled();
+  await expect(page.getByTestId('sk-result')).toBeHidden();
+  const done = Number(await page.getByTestId('sk-progress').getAttribute('data-done'));
+  expect(done, 'stopped long before the end').toBeLessThan(400);
+
+  // A later run works.
+  await page.getByTestId('opt-n').fill('12');
+  await page.getByTestId('opt-seed').fill('7');
+  await page.getByTestId('sk-compute').click();
+  await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
+  await expect(page.getByTestId('sk-n')).toHaveText('12');
+  await expect(page.getByTestId('sk-seed')).toHaveText('7');
+  expect(await figure(page, 'sk-nodes')).toBeGreaterThan(1);
+  await expect(page.getByTestId('sk-status')).toHaveAttribute('data-status', 'done');
+});
+
+test('a cancel that the worker cannot hear (a step that hangs) replaces the worker', async ({ page }) => {
+  test.slow();
+  await openWhole(page, 12);
+  // The worker is stuck for a minute before it gets to the skeleton request.
+  await page.evaluate(() => void window.cscd!.simulateCrash('hang'));
+  await page.getByTestId('sk-compute').click();
+  await expect(body(page)).toHaveAttribute('data-sk-run', 'running');
+  await page.getByTestId('sk-cancel').click();
+  await expect(page.getByTestId('sk-cancel')).toBeDisabled();
+
+  // After the grace period the worker is replaced and the mesh re-opened: cancelled, no error.
+  await expect(body(page)).toHaveAttribute('data-sk-run', 'cancelled', { timeout: 15_000 });
+  await expect(page.getByTestId('sk-status')).toContainText('Cancelled');
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('error')).toBeHidden();
+  await expect(page.getByTestId('facts-vertices')).toHaveText('2930');
+
+  // The new worker computes.
+  await page.getByTestId('sk-compute').click();
+  await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
+  expect(await figure(page, 'sk-nodes')).toBeGreaterThan(1);
+});

@@ -1,0 +1,160 @@
+/**
+ * The viewer layers of a whole-shape run: candidate loops (as they arrive, then by fate), the packed
+ * loops, per-vertex region colours and the curve skeleton (nodes as spheres, edges as tubes).
+ */
+import * as THREE from 'three';
+import type { SkeletonData } from '../worker/protocol.ts';
+import { SK_COLORS } from '../ui/skeleton-panel.ts';
+import { DIM_GREY, DIM_MIX, SpheresLayer, type Layer, type SurfaceLayer } from './layers.ts';
+import { TubesLayer, graphSegments, liftOffSurface, polylineSegments } from './tubes.ts';
+import type { NamedLayer } from './separator-layers.ts';
+
+/** Sizes as fractions of the mesh's bounding-sphere radius. */
+const RADIUS = { candidate: 0.0042, rejected: 0.0036, packed: 0.0072, edge: 0.0105, minNode: 0.016 };
+/** Node spheres are drawn at this fraction of their radius (the full radius hides the skeleton in a blob). */
+export const NODE_SCALE = 0.27;
+
+/**
+ * Above this many segments a loop layer is drawn as lines instead of tubes: software renderers
+ * (headless browsers, machines without a GPU) take seconds for a frame of hundreds of thousands of
+ * tube triangles, and the page waits for every frame.
+ */
+const TUBE_SEGMENT_BUDGET = 6000;
+
+/** Loops as thin tube segments (or lines, when there are very many) lifted off the surface. */
+export class LoopSet {
+  private readonly segments: Float32Array[] = [];
+
+  constructor(
+    private readonly surface: SurfaceLayer,
+    private readonly lift: number,
+  ) {}
+
+  add(loop: Float32Array): void {
+    if (loop.length < 9) return; // failed source (empty) or degenerate
+    const lifted = liftOffSurface(loop, this.surface, this.lift);
+    this.segments.push(polylineSegments(lifted, true));
+  }
+
+  get count(): number {
+    return this.segments.length;
+  }
+
+  layer(label: string, color: string, radius: number): Layer {
+    const segments = concat(this.segments);
+    if (segments.length / 6 > TUBE_SEGMENT_BUDGET) return new LinesLayer(label, segments, color);
+    // No joint balls: at a few pixels wide the corners do not show, and balls would triple the triangles.
+    return new TubesLayer(label, segments, new Float32Array(0), { color, radius, detail: 'low' });
+  }
+}
+
+/** Line segments (two xyz points each) in one colour, dimmable. */
+export class LinesLayer implements Layer {
+  readonly object: THREE.LineSegments<THREE.BufferGeometry, THREE.LineBasicMaterial>;
+  private readonly color: THREE.Color;
+
+  constructor(
+    readonly label: string,
+    segments: Float32Array,
+    color: THREE.ColorRepresentation,
+  ) {
+    this.color = new THREE.Color(color);
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(segments, 3));
+    geometry.computeBoundingSphere();
+    this.object = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color: this.color }));
+  }
+
+  setDimmed(dimmed: boolean): void {
+    this.object.material.color.copy(this.color);
+    if (dimmed) this.object.material.color.lerp(DIM_GREY, DIM_MIX);
+  }
+
+  dispose(): void {
+    this.object.geometry.dispose();
+    this.object.material.dispose();
+  }
+}
+
+function concat(parts: Float32Array[]): Float32Array {
+  const out = new Float32Array(parts.reduce((n, p) => n + p.length, 0));
+  let at = 0;
+  for (const p of parts) {
+    out.set(p, at);
+    at += p.length;
+  }
+  return out;
+}
+
+/** The tube radius (world units) of the progressive candidate loops. */
+export function candidateRadius(surface: SurfaceLayer): number {
+  return RADIUS.candidate * surface.boundingSphere.radius;
+}
+
+/** Layers of a finished run: `sk-rejected`, `sk-packed`, `sk-edges`, `sk-nodes` (those with data). */
+export function skeletonLayers(s: SkeletonData, surface: SurfaceLayer): NamedLayer[] {
+  const R = surface.boundingSphere.radius;
+  const out: NamedLayer[] = [];
+
+  const rejected = new LoopSet(surface, RADIUS.rejected * R * 0.6);
+  const packed = new LoopSet(surface, RADIUS.packed * R * 0.6);
+  s.candidates.loops.forEach((loop, i) => (s.candidates.fates[i] === 'packed' ? packed : rejected).add(loop));
+  if (rejected.count > 0) {
+    out.push({ name: 'sk-rejected', layer: rejected.layer('Rejected loops', SK_COLORS.rejected, RADIUS.rejected * R), color: SK_COLORS.rejected });
+  }
+  if (packed.count > 0) {
+    out.push({ name: 'sk-packed', layer: packed.layer('Packed loops', SK_COLORS.packed, RADIUS.packed * R), color: SK_COLORS.packed });
+  }
+
+  const nodeCount = Math.floor(s.nodes.length / 3);
+  if (nodeCount > 0) {
+    const edgeRadius = RADIUS.edge * R;
+    if (s.edges.length >= 2) {
+      out.push({
+        name: 'sk-edges',
+        layer: new TubesLayer('Skeleton edges', graphSegments(s.nodes, s.edges), new Float32Array(0), {
+          color: SK_COLORS.edge,
+          radius: edgeRadius,
+          glow: 0.25,
+        }),
+        color: SK_COLORS.edge,
+      });
+    }
+    const radii = nodeRadii(s, R);
+    out.push({ name: 'sk-nodes', layer: new SpheresLayer('Skeleton nodes', s.nodes, radii, SK_COLORS.node), color: SK_COLORS.node });
+  }
+  return out;
+}
+
+/** Drawn node radii: the node's radius scaled, never thinner than the edges (branch nodes may have none). */
+export function nodeRadii(s: SkeletonData, boundingRadius: number): Float32Array {
+  const nodeCount = Math.floor(s.nodes.length / 3);
+  const min = RADIUS.minNode * boundingRadius;
+  const max = 0.25 * boundingRadius;
+  return Float32Array.from({ length: nodeCount }, (_, i) => {
+    const r = s.radii[i];
+    return Number.isFinite(r) && r > 0 ? Math.min(max, Math.max(min, r * NODE_SCALE)) : min;
+  });
+}
+
+/** A distinct colour per region (golden-ratio hues, three lightness levels), as sRGB hex strings. */
+export function regionColor(i: number): string {
+  const hue = (i * 0.618033988749895 + 0.05) % 1;
+  const lightness = [0.58, 0.47, 0.68][i % 3];
+  return `#${new THREE.Color().setHSL(hue, 0.68, lightness, THREE.SRGBColorSpace).getHexString(THREE.SRGBColorSpace)}`;
+}
+
+/** Linear RGB per vertex from its region (vertices of no region in a neutral grey). */
+export function regionVertexColors(vertexToNode: Uint32Array, nodeCount: number, vertexCount: number): Float32Array {
+  const palette = Array.from({ length: nodeCount }, (_, i) => new THREE.Color(regionColor(i)));
+  const none = new THREE.Color(0x8a8780);
+  const out = new Float32Array(3 * vertexCount);
+  for (let v = 0; v < vertexCount; v++) {
+    const node = v < vertexToNode.length ? vertexToNode[v] : nodeCount;
+    const c = node < nodeCount ? palette[node] : none;
+    out[3 * v] = c.r;
+    out[3 * v + 1] = c.g;
+    out[3 * v + 2] = c.b;
+  }
+  return out;
+}

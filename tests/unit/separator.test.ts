@@ -1,7 +1,7 @@
 // Stage 1 of CSCD-M (one local separator per source) on real and analytic meshes: issue 3's checks.
 import { beforeAll, describe, expect, it } from 'vitest';
 import { defaultOptions, loadCoreNode, type Core, type MeshArrays, type Separator, type Surface } from '../../lib/core/node.ts';
-import { icosphere, pointTriangleDistance2, readMesh, withSlivers } from './support/meshes.ts';
+import { extremities, icosphere, pointTriangleDistance2, readMesh, withSlivers } from './support/meshes.ts';
 import { sharedMesh } from '../paths.ts';
 
 let core: Core;
@@ -12,21 +12,6 @@ beforeAll(async () => {
 const points = (flat: Float64Array) => Array.from({ length: flat.length / 3 }, (_, i) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]]);
 const distance3 = (a: number[], b: number[]) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 const vertex = (mesh: MeshArrays, v: number) => [0, 1, 2].map((k) => mesh.positions[3 * v + k]);
-
-/** `count` limb tips by farthest-point sampling of the geodesic distance. */
-function extremities(surface: Surface, count: number): number[] {
-  const nearest = new Float64Array(surface.facts.vertices).fill(Infinity);
-  const d0 = surface.distanceFromVertex(0);
-  let tip = d0.indexOf(Math.max(...d0));
-  const tips: number[] = [];
-  while (tips.length < count) {
-    tips.push(tip);
-    const d = surface.distanceFromVertex(tip);
-    for (let v = 0; v < d.length; v++) nearest[v] = Math.min(nearest[v], d[v]);
-    tip = nearest.indexOf(Math.max(...nearest));
-  }
-  return tips;
-}
 
 /** The vertex whose geodesic distance from `from` is closest to `at`. */
 function vertexAtDistance(surface: Surface, from: number, at: number): number {

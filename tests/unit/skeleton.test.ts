@@ -2,8 +2,8 @@
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
-import { loadCoreNode, type Core, type MeshArrays, type Skeleton, type Surface } from '../../lib/core/node.ts';
-import { readMesh } from './support/meshes.ts';
+import { loadCoreNode, type Core, type MeshArrays, type Skeleton } from '../../lib/core/node.ts';
+import { extremities, readMesh } from './support/meshes.ts';
 import { sharedData, sharedMesh } from '../paths.ts';
 
 let core: Core;
@@ -48,21 +48,6 @@ function windingNumber(mesh: MeshArrays, p: number[]): number {
     total += 2 * Math.atan2(det, la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb);
   }
   return total / (4 * Math.PI);
-}
-
-/** `count` limb tips by farthest-point sampling of the geodesic distance. */
-function extremities(surface: Surface, count: number): number[] {
-  const nearest = new Float64Array(surface.facts.vertices).fill(Infinity);
-  const d0 = surface.distanceFromVertex(0);
-  let tip = d0.indexOf(Math.max(...d0));
-  const tips: number[] = [];
-  while (tips.length < count) {
-    tips.push(tip);
-    const d = surface.distanceFromVertex(tip);
-    for (let v = 0; v < d.length; v++) nearest[v] = Math.min(nearest[v], d[v]);
-    tip = nearest.indexOf(Math.max(...nearest));
-  }
-  return tips;
 }
 
 /** The nearest leaf of the skeleton to every tip must be a different node, within `reach` of it. */

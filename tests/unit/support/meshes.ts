@@ -2,7 +2,7 @@
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { parseMesh } from '../../../lib/io/index.ts';
-import type { MeshArrays } from '../../../lib/core/index.ts';
+import type { MeshArrays, Surface } from '../../../lib/core/index.ts';
 import { random } from '../../../lib/core/random.ts';
 
 export function readMesh(file: string): MeshArrays {
@@ -123,4 +123,19 @@ export function pointTriangleDistance2(p: number[], a: number[], b: number[], c:
   }
   const d = sub(p, q);
   return dot(d, d);
+}
+
+/** `count` limb tips by farthest-point sampling of the geodesic distance. */
+export function extremities(surface: Surface, count: number): number[] {
+  const nearest = new Float64Array(surface.facts.vertices).fill(Infinity);
+  const d0 = surface.distanceFromVertex(0);
+  let tip = d0.indexOf(Math.max(...d0));
+  const tips: number[] = [];
+  while (tips.length < count) {
+    tips.push(tip);
+    const d = surface.distanceFromVertex(tip);
+    for (let v = 0; v < d.length; v++) nearest[v] = Math.min(nearest[v], d[v]);
+    tip = nearest.indexOf(Math.max(...nearest));
+  }
+  return tips;
 }

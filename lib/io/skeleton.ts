@@ -44,15 +44,7 @@ export interface SkeletonJson {
   vertexToNode: number[];
   /** The packed separators' loops, in the order of `packed` (separator i owns node i's region). */
   separators: Point[][];
-  stats: {
-    n: number;
-    candidates: number;
-    pruned: number;
-    packed: number;
-    cycles: number;
-    seed: number;
-    timings: Record<string, number>;
-  };
+  stats: Skeleton['stats'];
   options: Options;
 }
 

@@ -70,33 +70,28 @@ function startAction(status: string): void {
   panel.setStatus(status, true);
 }
 
+/** Shows the worker being replaced until the mesh is open in the new one. */
+function awaitRestart(restored: Promise<unknown>): void {
+  opening++;
+  panel.setStatus('restarting the geometry worker…', true);
+  updateState();
+  restored
+    .catch((error: unknown) => fail('Could not re-open the mesh after the restart', error))
+    .finally(() => {
+      opening--;
+      updateState();
+    });
+}
+
 const client = new GeometryClient({
   onProgress: (event) => panel.setStatus(event.message, true),
   onCrash: (message, restored) => {
     failed = true;
     panel.showError('The geometry worker stopped and was restarted', message);
-    opening++;
-    panel.setStatus('restarting the geometry worker…', true);
-    updateState();
-    restored
-      .catch((error: unknown) => fail('Could not re-open the mesh after the restart', error))
-      .finally(() => {
-        opening--;
-        updateState();
-      });
+    awaitRestart(restored);
   },
   // The worker was replaced to stop a cancelled run: the mesh is re-opened, no error to show.
-  onRestart: (restored) => {
-    opening++;
-    panel.setStatus('restarting the geometry worker…', true);
-    updateState();
-    restored
-      .catch((error: unknown) => fail('Could not re-open the mesh after the restart', error))
-      .finally(() => {
-        opening--;
-        updateState();
-      });
-  },
+  onRestart: awaitRestart,
 });
 
 // -- opening meshes ------------------------------------------------------------------------------

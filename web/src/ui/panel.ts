@@ -7,7 +7,24 @@ function $<T extends HTMLElement = HTMLElement>(selector: string): T {
   if (!element) throw new Error(`missing element ${selector}`);
   return element;
 }
-const byTestId = (id: string) => $(`[data-testid="${id}"]`);
+/** The element with data-testid `id` (the page's markup names every element the code touches). */
+export const byTestId = <T extends HTMLElement = HTMLElement>(id: string): T => $<T>(`[data-testid="${id}"]`);
+
+/** "cutLocus" -> "Cut locus". */
+export function humanize(key: string): string {
+  const words = key.replace(/([a-z0-9])([A-Z])/g, '$1 $2').replace(/[-_]+/g, ' ').toLowerCase();
+  return words.charAt(0).toUpperCase() + words.slice(1);
+}
+
+/** A legend entry: a colour chip and its label. */
+export function swatch(color: string, label: string): HTMLLIElement {
+  const li = document.createElement('li');
+  const chip = document.createElement('span');
+  chip.className = 'swatch';
+  chip.style.background = color;
+  li.append(chip, label);
+  return li;
+}
 
 /** A length with four significant digits. */
 export function formatLength(x: number): string {

@@ -6,7 +6,8 @@
 import { optionRanges } from '../../../lib/core/options.ts';
 import type { CandidateFate, Options } from '../../../lib/core/types.ts';
 import type { SkeletonReply } from '../worker/protocol.ts';
-import { formatMs } from './panel.ts';
+import { byTestId, formatMs, humanize, swatch } from './panel.ts';
+import { Stepper } from './stepper.ts';
 
 /** Layer colours (sRGB), shared by the viewer layers and the legends. */
 export const SK_COLORS = {
@@ -81,26 +82,6 @@ const FATE_TEXT: Record<CandidateFate, string> = {
   failed: 'no loop',
 };
 
-const byTestId = <T extends HTMLElement = HTMLElement>(id: string): T => {
-  const el = document.querySelector<T>(`[data-testid="${id}"]`);
-  if (!el) throw new Error(`missing element ${id}`);
-  return el;
-};
-
-function humanize(key: string): string {
-  const words = key.replace(/([a-z0-9])([A-Z])/g, '$1 $2').replace(/[-_]+/g, ' ').toLowerCase();
-  return words.charAt(0).toUpperCase() + words.slice(1);
-}
-
-function swatch(color: string, label: string): HTMLLIElement {
-  const li = document.createElement('li');
-  const chip = document.createElement('span');
-  chip.className = 'swatch';
-  chip.style.background = color;
-  li.append(chip, label);
-  return li;
-}
-
 export type RunStatus = 'running' | 'done' | 'cancelled' | 'failed';
 
 export class SkeletonPanel {
@@ -117,14 +98,15 @@ export class SkeletonPanel {
   private readonly progress = byTestId('sk-progress');
   private readonly fill = this.progress.querySelector<HTMLElement>('.progress-fill')!;
   private readonly track = this.progress.querySelector<HTMLElement>('.progress-track')!;
-  private readonly prev = byTestId<HTMLButtonElement>('sk-prev');
-  private readonly next = byTestId<HTMLButtonElement>('sk-next');
   private readonly nInput = byTestId<HTMLInputElement>('opt-n');
   private readonly nAuto = byTestId<HTMLInputElement>('opt-n-auto');
   private readonly seedInput = byTestId<HTMLInputElement>('opt-seed');
   private readonly pruneInput = byTestId<HTMLInputElement>('opt-prune-length');
-  private readonly pills: HTMLButtonElement[];
-  private stage = 1;
+  private readonly stepper = new Stepper(
+    { prev: 'sk-prev', next: 'sk-next', steps: 'sk-steps' },
+    SK_STAGES.map((def) => def.title),
+    () => this.active && !byTestId('sk-result').hidden,
+  );
 
   constructor(defaults: Options) {
     this.nAuto.checked = defaults.n === 'auto';
@@ -136,34 +118,7 @@ export class SkeletonPanel {
 
     this.compute.addEventListener('click', () => this.onCompute?.());
     this.cancel.addEventListener('click', () => this.onCancel?.());
-    this.pills = SK_STAGES.map((def, i) => {
-      const button = document.createElement('button');
-      button.type = 'button';
-      button.className = 'step';
-      button.textContent = String(i + 1);
-      button.title = `${i + 1}. ${def.title}`;
-      button.dataset.stage = String(i + 1);
-      button.addEventListener('click', () => this.onSelect?.(i + 1));
-      return button;
-    });
-    byTestId('sk-steps').replaceChildren(
-      ...this.pills.map((pill) => {
-        const li = document.createElement('li');
-        li.append(pill);
-        return li;
-      }),
-    );
-    this.prev.addEventListener('click', () => this.onSelect?.(this.stage - 1));
-    this.next.addEventListener('click', () => this.onSelect?.(this.stage + 1));
-    document.addEventListener('keydown', (e) => {
-      if (!this.active || e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey || byTestId('sk-result').hidden) return;
-      const target = e.target as HTMLElement | null;
-      if (target?.closest('input, select, textarea, [contenteditable="true"]')) return;
-      if (e.key === 'ArrowRight') this.onSelect?.(this.stage + 1);
-      else if (e.key === 'ArrowLeft') this.onSelect?.(this.stage - 1);
-      else return;
-      e.preventDefault();
-    });
+    this.stepper.onSelect = (stage) => this.onSelect?.(stage);
     for (const input of [this.nInput, this.seedInput, this.pruneInput]) {
       input.addEventListener('keydown', (e) => {
         if (e.key === 'Enter' && !this.compute.disabled) this.onCompute?.();
@@ -283,7 +238,6 @@ export class SkeletonPanel {
 
   /** The view shown; `present`: layers with data; `regionColors`: one per region, for its legend. */
   setStage(stage: number, reply: SkeletonReply, present: ReadonlySet<string>, regionColors: string[]): void {
-    this.stage = stage;
     const def = SK_STAGES[stage - 1];
     const s = reply.skeleton;
     document.body.dataset.skStage = String(stage);
@@ -321,12 +275,6 @@ export class SkeletonPanel {
       legend.push(li);
     }
     byTestId('sk-stage-legend').replaceChildren(...legend);
-    this.prev.disabled = stage <= 1;
-    this.next.disabled = stage >= SK_STAGES.length;
-    this.pills.forEach((pill, i) => {
-      pill.classList.toggle('current', i + 1 === stage);
-      pill.classList.toggle('done', i + 1 < stage);
-      pill.setAttribute('aria-current', i + 1 === stage ? 'step' : 'false');
-    });
+    this.stepper.show(stage, SK_STAGES.length);
   }
 }

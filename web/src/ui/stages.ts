@@ -4,7 +4,8 @@
  */
 import type { SeparatorStatus } from '../../../lib/core/types.ts';
 import type { SeparatorReply } from '../worker/protocol.ts';
-import { formatLength, formatMs } from './panel.ts';
+import { byTestId, formatLength, formatMs, humanize, swatch } from './panel.ts';
+import { Stepper } from './stepper.ts';
 
 /** Layer colours (sRGB), shared by the viewer layers and the panel legend. */
 export const COLORS = {
@@ -105,68 +106,21 @@ export function reachedStage(status: SeparatorStatus): number {
   }
 }
 
-const byTestId = <T extends HTMLElement = HTMLElement>(id: string): T => {
-  const el = document.querySelector<T>(`[data-testid="${id}"]`);
-  if (!el) throw new Error(`missing element ${id}`);
-  return el;
-};
-
-/** "cutLocus" -> "Cut locus". */
-function humanize(key: string): string {
-  const words = key.replace(/([a-z0-9])([A-Z])/g, '$1 $2').replace(/[-_]+/g, ' ').toLowerCase();
-  return words.charAt(0).toUpperCase() + words.slice(1);
-}
-
-function swatch(color: string, label: string): HTMLLIElement {
-  const li = document.createElement('li');
-  const chip = document.createElement('span');
-  chip.className = 'swatch';
-  chip.style.background = color;
-  li.append(chip, label);
-  return li;
-}
-
 export class StagePanel {
   /** Called when the user asks for another stage (buttons, pills, keys). */
   onSelect: ((stage: number) => void) | null = null;
   /** Keys step the stages only while this mode is shown. */
   enabled = true;
 
-  private readonly prev = byTestId<HTMLButtonElement>('stage-prev');
-  private readonly next = byTestId<HTMLButtonElement>('stage-next');
-  private readonly pills: HTMLButtonElement[];
-  private stage = 1;
+  private readonly stepper = new Stepper(
+    { prev: 'stage-prev', next: 'stage-next', steps: 'stage-steps' },
+    STAGES.map((def) => def.title),
+    () => this.enabled && !byTestId('separator').hidden,
+  );
   private reached = 1;
 
   constructor() {
-    this.pills = STAGES.map((def, i) => {
-      const button = document.createElement('button');
-      button.type = 'button';
-      button.className = 'step';
-      button.textContent = String(i + 1);
-      button.title = `${i + 1}. ${def.title}`;
-      button.dataset.stage = String(i + 1);
-      button.addEventListener('click', () => this.onSelect?.(i + 1));
-      return button;
-    });
-    byTestId('stage-steps').replaceChildren(
-      ...this.pills.map((pill) => {
-        const li = document.createElement('li');
-        li.append(pill);
-        return li;
-      }),
-    );
-    this.prev.addEventListener('click', () => this.onSelect?.(this.stage - 1));
-    this.next.addEventListener('click', () => this.onSelect?.(this.stage + 1));
-    document.addEventListener('keydown', (e) => {
-      if (!this.enabled || e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey || byTestId('separator').hidden) return;
-      const target = e.target as HTMLElement | null;
-      if (target?.closest('input, select, textarea, [contenteditable="true"]')) return;
-      if (e.key === 'ArrowRight') this.onSelect?.(this.stage + 1);
-      else if (e.key === 'ArrowLeft') this.onSelect?.(this.stage - 1);
-      else return;
-      e.preventDefault();
-    });
+    this.stepper.onSelect = (stage) => this.onSelect?.(stage);
   }
 
   /** Shows a run's results (or hides the whole block when `reply` is null). */
@@ -225,7 +179,6 @@ export class StagePanel {
 
   /** The stage shown; `present`: the layers the run has data for (the legend lists only those). */
   setStage(stage: number, reply: SeparatorReply, present: ReadonlySet<string>): void {
-    this.stage = stage;
     const def = STAGES[stage - 1];
     const s = reply.separator;
     document.body.dataset.stage = String(stage);
@@ -244,14 +197,7 @@ export class StagePanel {
     byTestId('stage-legend').replaceChildren(...legend.map(({ label, color }) => swatch(color, label)));
     byTestId('stage-card').classList.toggle('failed', stage === this.reached && s.status !== 'ok');
 
-    this.prev.disabled = stage <= 1;
-    this.next.disabled = stage >= this.reached;
-    this.pills.forEach((pill, i) => {
-      pill.classList.toggle('current', i + 1 === stage);
-      pill.classList.toggle('done', i + 1 < stage);
-      pill.disabled = i + 1 > this.reached;
-      pill.setAttribute('aria-current', i + 1 === stage ? 'step' : 'false');
-    });
+    this.stepper.show(stage, this.reached);
   }
 
   get reachedStage(): number {

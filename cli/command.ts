@@ -41,17 +41,20 @@ export function getCore(): Promise<Core> {
   return core;
 }
 
-/** Reads and parses a mesh file; parser warnings go to stderr unless the command reports them itself. */
-export async function readMesh(file: string, { printWarnings = true } = {}): Promise<ParsedMesh> {
-  let bytes: Uint8Array;
+/** A file's bytes, or an error that says in plain words why it cannot be read. */
+export async function readBytes(file: string): Promise<Uint8Array> {
   try {
-    bytes = await readFile(file);
+    return await readFile(file);
   } catch (error) {
     const code = (error as NodeJS.ErrnoException).code;
     const reason = code === 'ENOENT' ? 'no such file' : code === 'EISDIR' ? 'it is a directory' : (error as Error).message;
     throw new Error(`cannot read '${file}': ${reason}`);
   }
-  const mesh = parseMesh(bytes, file);
+}
+
+/** Reads and parses a mesh file; parser warnings go to stderr unless the command reports them itself. */
+export async function readMesh(file: string, { printWarnings = true } = {}): Promise<ParsedMesh> {
+  const mesh = parseMesh(await readBytes(file), file);
   if (printWarnings) for (const warning of mesh.warnings) process.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
   return mesh;
 }

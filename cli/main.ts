@@ -9,11 +9,12 @@ import { MESH_EXTENSIONS, MeshFormatError } from '../lib/io/index.ts';
 import { SkeletonFormatError } from '../lib/io/skeleton.ts';
 import { UsageError, type Command } from './command.ts';
 import { distance } from './commands/distance.ts';
+import { evaluate } from './commands/evaluate.ts';
 import { info } from './commands/info.ts';
 import { separator } from './commands/separator.ts';
 import { skeleton } from './commands/skeleton.ts';
 
-const COMMANDS: Command[] = [info, distance, separator, skeleton];
+const COMMANDS: Command[] = [info, distance, separator, skeleton, evaluate];
 
 async function main(argv: string[]): Promise<void> {
   const [first, ...rest] = argv;

@@ -4,6 +4,7 @@ import createCscdModule, { type CscdModule, type PipelineHandle, type SurfaceHan
 import {
   CoreError,
   type Core,
+  type Evaluation,
   type MeshArrays,
   type MeshFacts,
   type Options,
@@ -11,6 +12,7 @@ import {
   type PipelineProgress,
   type Separator,
   type Skeleton,
+  type SkeletonInput,
   type Surface,
   type SurfacePoint,
 } from './types.ts';
@@ -114,6 +116,11 @@ class WasmCore implements Core {
 
   inspect(mesh: MeshArrays): MeshFacts {
     return unwrap(this.module.inspect(mesh.positions, mesh.triangles) as MeshFacts | string);
+  }
+
+  evaluate(mesh: MeshArrays, skeleton: SkeletonInput): Evaluation {
+    const result = this.module.evaluate(mesh.positions, mesh.triangles, skeleton.nodes, skeleton.edges, skeleton.radii ?? null);
+    return unwrap(result) as Evaluation;
   }
 
   openSurface(mesh: MeshArrays): Surface {

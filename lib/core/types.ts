@@ -187,11 +187,49 @@ export interface Surface {
   dispose(): void;
 }
 
+/** A curve skeleton from any tool, as the evaluation takes it. */
+export interface SkeletonInput {
+  /** Node positions, xyz per node. */
+  nodes: Float64Array;
+  /** Pairs of node indices. */
+  edges: Uint32Array;
+  /** One radius per node; null or absent: derived from the mesh (see docs/evaluation.md). */
+  radii?: Float64Array | null;
+}
+
+/**
+ * The paper's reconstruction error of a skeleton (Sec. 5, App. "Evaluation metric"): the skeleton's
+ * convolution surface against the mesh's vertices. Errors are squared distances on the mesh scaled to
+ * unit bounding-box diagonal, times 1000 (the paper's unit).
+ */
+export interface Evaluation {
+  /** Mean over the mesh's vertices of the squared distance to the reconstructed surface (x1e3). */
+  reconError: number;
+  median: number;
+  p95: number;
+  nodes: number;
+  /** Independent cycles of the skeleton graph (self-loops and repeated edges left out). */
+  cycles: number;
+  radiiSource: 'given' | 'derived';
+  /** The radii the reconstruction used. */
+  radii: Float64Array;
+  /** Error per input vertex (x1e3; 0 for vertices used by no face). */
+  vertexError: Float64Array;
+  /** The reconstructed (convolution) surface. */
+  surface: { positions: Float32Array; triangles: Uint32Array };
+  /** The marching-cubes grid: cell size (mesh units) and points per axis. */
+  grid: { cell: number; dims: [number, number, number] };
+  /** Milliseconds per step. */
+  timings: Record<string, number>;
+}
+
 export interface Core {
   /** Checks the arrays (throws CoreError on empty input, bad indices, NaN/Inf) and reports mesh facts. */
   inspect(mesh: MeshArrays): MeshFacts;
   /** Builds the per-mesh state; throws CoreError when the mesh cannot be processed (e.g. non-manifold). */
   openSurface(mesh: MeshArrays): Surface;
+  /** The reconstruction error of a skeleton against a mesh (the mesh need not be manifold). */
+  evaluate(mesh: MeshArrays, skeleton: SkeletonInput): Evaluation;
 }
 
 /** An error the core reports about its input or a computation: its message is meant for the user. */

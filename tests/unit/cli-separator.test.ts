@@ -1,21 +1,16 @@
 // `cscd separator` run as users run it: a child process writing the stage-1 JSON.
-import { spawnSync } from 'node:child_process';
 import type { Point, SeparatorJson } from '../../cli/commands/separator.ts';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { defaultOptions } from '../../lib/core/options.ts';
-import { repoRoot, sharedMesh } from '../paths.ts';
+import { sharedMesh } from '../paths.ts';
 import { icosphere, readMesh } from './support/meshes.ts';
+import { cscd } from './support/cli.ts';
 
 const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-separator-'));
 afterAll(() => rmSync(tmp, { recursive: true, force: true }));
-
-function cscd(...args: string[]) {
-  const result = spawnSync(process.execPath, ['cli/cscd.mjs', ...args], { cwd: repoRoot, encoding: 'utf8' });
-  return { status: result.status, stdout: result.stdout, stderr: result.stderr };
-}
 
 const KEYS = [
   'source', 'status', 'message', 'distance', 'cutLocus', 'target', 'paths', 'approxLoop', 'loop', 'sphere',

@@ -1,21 +1,16 @@
 // `cscd skeleton` run as users run it: a child process writing the curve skeleton in each format.
-import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { defaultOptions } from '../../lib/core/options.ts';
 import { parseSkeleton, spanningForest, type SkeletonJson } from '../../lib/io/skeleton.ts';
-import { repoRoot, sharedMesh } from '../paths.ts';
+import { sharedMesh } from '../paths.ts';
 import { icosphere } from './support/meshes.ts';
+import { cscd } from './support/cli.ts';
 
 const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-skeleton-'));
 afterAll(() => rmSync(tmp, { recursive: true, force: true }));
-
-function cscd(...args: string[]) {
-  const result = spawnSync(process.execPath, ['cli/cscd.mjs', ...args], { cwd: repoRoot, encoding: 'utf8' });
-  return { status: result.status, stdout: result.stdout, stderr: result.stderr };
-}
 
 const KEYS = ['mesh', 'nodes', 'radii', 'edges', 'vertexToNode', 'separators', 'stats', 'options'];
 const STATS = ['n', 'candidates', 'pruned', 'packed', 'cycles', 'seed', 'timings'];

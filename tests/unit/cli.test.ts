@@ -1,19 +1,14 @@
 // The cscd command run as users run it: a child process, JSON on stdout, one `cscd:` line on stderr
 // and exit code 2 (usage) or 1 (anything else) on errors.
-import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, describe, expect, it } from 'vitest';
 import { fixture, repoRoot, sharedMesh } from '../paths.ts';
+import { cscd } from './support/cli.ts';
 
 const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-cli-'));
 afterAll(() => rmSync(tmp, { recursive: true, force: true }));
-
-function cscd(...args: string[]) {
-  const result = spawnSync(process.execPath, ['cli/cscd.mjs', ...args], { cwd: repoRoot, encoding: 'utf8' });
-  return { status: result.status, stdout: result.stdout, stderr: result.stderr };
-}
 
 /** Checks the error contract and returns the message after "cscd: ". */
 function expectError(result: ReturnType<typeof cscd>, status: 1 | 2): string {

@@ -63,6 +63,43 @@ export function torus(R: number, r: number, nu: number, nv: number): MeshArrays 
   return { positions, triangles: Uint32Array.from(triangles) };
 }
 
+/**
+ * Capsule along the x axis: the points within distance r of the segment from (-L/2, 0, 0) to (L/2, 0, 0).
+ * `around` vertices per ring; rings spaced about as far apart as the vertices of a ring.
+ */
+export function capsule(L: number, r: number, around: number): MeshArrays {
+  const step = (2 * Math.PI * r) / around;
+  const capRings = Math.max(2, Math.round((Math.PI * r) / 2 / step));
+  const profile: [number, number][] = []; // (x, ring radius), from the left tip (excluded) to the right one
+  for (let i = 1; i <= capRings; i++) {
+    const phi = ((Math.PI / 2) * i) / capRings;
+    profile.push([-L / 2 - r * Math.cos(phi), r * Math.sin(phi)]);
+  }
+  const bodyRings = Math.max(1, Math.round(L / step));
+  for (let i = 1; i < bodyRings; i++) profile.push([-L / 2 + (L * i) / bodyRings, r]);
+  for (let i = capRings; i >= 1; i--) {
+    const phi = ((Math.PI / 2) * i) / capRings;
+    profile.push([L / 2 + r * Math.cos(phi), r * Math.sin(phi)]);
+  }
+  const positions: number[] = [-L / 2 - r, 0, 0];
+  for (const [x, rho] of profile)
+    for (let j = 0; j < around; j++) {
+      const angle = (2 * Math.PI * j) / around;
+      positions.push(x, rho * Math.cos(angle), rho * Math.sin(angle));
+    }
+  positions.push(L / 2 + r, 0, 0);
+  const last = positions.length / 3 - 1;
+  const ring = (i: number, j: number) => 1 + i * around + (j % around);
+  const triangles: number[] = [];
+  for (let j = 0; j < around; j++) triangles.push(0, ring(0, j + 1), ring(0, j));
+  for (let i = 0; i + 1 < profile.length; i++)
+    for (let j = 0; j < around; j++)
+      triangles.push(ring(i, j), ring(i, j + 1), ring(i + 1, j), ring(i + 1, j), ring(i, j + 1), ring(i + 1, j + 1));
+  const end = profile.length - 1;
+  for (let j = 0; j < around; j++) triangles.push(last, ring(end, j), ring(end, j + 1));
+  return { positions: Float64Array.from(positions), triangles: Uint32Array.from(triangles) };
+}
+
 function normalize(p: number[]): number[] {
   const n = Math.hypot(p[0], p[1], p[2]);
   return p.map((x) => x / n);

@@ -1,6 +1,7 @@
 // embind surface of the core. Arrays cross as typed arrays (one copy in, one copy out: JS owns every
 // result, so heap growth cannot invalidate it). Nothing here throws into JS: a call that fails returns
 // the error message as a string, which lib/core turns into a CoreError.
+#include "evaluate/reconstruction_error.h"
 #include "mesh/realization.h"
 #include "mesh/separator.h"
 #include "mesh/surface.h"
@@ -240,6 +241,52 @@ val inspect(const val& positions, const val& triangles) {
   return reportingErrors([&] { return toVal(checkMesh(toArrays(positions, triangles)).facts); });
 }
 
+val toVal(const Evaluation& e) {
+  val o = val::object();
+  o.set("reconError", e.reconError);
+  o.set("median", e.median);
+  o.set("p95", e.p95);
+  o.set("nodes", e.nodes);
+  o.set("cycles", e.cycles);
+  o.set("radiiSource", std::string(e.radiiDerived ? "derived" : "given"));
+  o.set("radii", toFloat64Array(e.radii));
+  o.set("vertexError", toFloat64Array(e.vertexError));
+  std::vector<float> surfacePositions;
+  surfacePositions.reserve(3 * e.surface.vertices.size());
+  for (const auto& p : e.surface.vertices) surfacePositions.insert(surfacePositions.end(), {float(p.x), float(p.y), float(p.z)});
+  std::vector<uint32_t> surfaceTriangles;
+  surfaceTriangles.reserve(3 * e.surface.triangles.size());
+  for (const auto& t : e.surface.triangles) surfaceTriangles.insert(surfaceTriangles.end(), t.begin(), t.end());
+  val surface = val::object();
+  surface.set("positions", toTypedArray("Float32Array", surfacePositions));
+  surface.set("triangles", toTypedArray("Uint32Array", surfaceTriangles));
+  o.set("surface", surface);
+  val grid = val::object();
+  grid.set("cell", e.grid.cell);
+  val dims = val::array();
+  for (size_t d : e.grid.dims) dims.call<void>("push", d);
+  grid.set("dims", dims);
+  o.set("grid", grid);
+  o.set("timings", toVal(e.timings));
+  return o;
+}
+
+// Reconstruction error of a skeleton (nodes xyz, edges as node pairs, radii or null) against a mesh.
+val evaluate(const val& positions, const val& triangles, const val& nodes, const val& edges, const val& radii) {
+  return reportingErrors([&] {
+    std::vector<double> xyz = convertJSArrayToNumberVector<double>(nodes);
+    std::vector<uint32_t> pairs = convertJSArrayToNumberVector<uint32_t>(edges);
+    if (xyz.size() % 3 != 0) throw InputError("skeleton nodes must be xyz triples");
+    if (pairs.size() % 2 != 0) throw InputError("skeleton edges must be pairs of node indices");
+    SkeletonCurves skeleton;
+    for (size_t i = 0; i < xyz.size(); i += 3) skeleton.nodes.push_back({xyz[i], xyz[i + 1], xyz[i + 2]});
+    for (size_t i = 0; i < pairs.size(); i += 2) skeleton.edges.push_back({pairs[i], pairs[i + 1]});
+    if (!radii.isNull() && !radii.isUndefined()) skeleton.radii = convertJSArrayToNumberVector<double>(radii);
+
+    return toVal(evaluateSkeleton(toArrays(positions, triangles), std::move(skeleton)));
+  });
+}
+
 class SurfaceBinding {
 public:
   SurfaceBinding(const val& positions, const val& triangles) {
@@ -359,6 +406,7 @@ private:
 EMSCRIPTEN_BINDINGS(cscd) {
   using namespace cscd;
   function("inspect", &inspect);
+  function("evaluate", &evaluate);
   class_<SurfaceBinding>("Surface")
       .constructor<const val&, const val&>()
       .function("error", &SurfaceBinding::error)

@@ -19,6 +19,13 @@ export interface PipelineHandle {
 
 export interface CscdModule {
   inspect(positions: Float64Array | Float32Array, triangles: Uint32Array): unknown;
+  evaluate(
+    positions: Float64Array | Float32Array,
+    triangles: Uint32Array,
+    nodes: Float64Array,
+    edges: Uint32Array,
+    radii: Float64Array | null,
+  ): object | string;
   Surface: new (positions: Float64Array | Float32Array, triangles: Uint32Array) => SurfaceHandle;
   Pipeline: new (surface: SurfaceHandle, options: object) => PipelineHandle;
 }

@@ -1,29 +1,14 @@
 #include "mesh/separator.h"
 
+#include "cscd/stage_clock.h"
 #include "mesh/measures.h"
 #include "mesh/target.h"
-
-#include <chrono>
 
 using namespace geometrycentral;
 using namespace geometrycentral::surface;
 
 namespace cscd {
 namespace {
-
-class StageClock {
-public:
-  explicit StageClock(std::vector<std::pair<std::string, double>>& out) : out(out) {}
-  void lap(const char* stage) {
-    auto now = std::chrono::steady_clock::now();
-    out.emplace_back(stage, std::chrono::duration<double, std::milli>(now - start).count());
-    start = now;
-  }
-
-private:
-  std::vector<std::pair<std::string, double>>& out;
-  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-};
 
 // An intrinsic vertex path as a polyline on the input surface (each intrinsic edge traced across it).
 std::vector<Vector3> tracePolyline(Surface& surface, const std::vector<size_t>& vertices, bool closed) {

@@ -1,0 +1,28 @@
+import { parseSkeleton } from '../../lib/io/skeleton.ts';
+import { getCore, readBytes, readMesh, type Command } from '../command.ts';
+
+export const evaluate: Command = {
+  name: 'evaluate',
+  summary: "score a skeleton by the paper's reconstruction error against its mesh, as JSON",
+  args: ['<mesh>', '<skeleton>'],
+  options: {
+    'derive-radii': { type: 'boolean', description: "ignore the skeleton file's radii and derive them from the mesh" },
+  },
+  details: [
+    'Prints {"reconError", "median", "p95", "nodes", "cycles", "radiiSource"}: the squared distance from each',
+    "mesh vertex to the skeleton's convolution surface, on the mesh scaled to unit bounding-box diagonal, x1e3",
+    '(mean, median, 95th percentile). The skeleton may be JSON (as written by `cscd skeleton`), PLY with an',
+    'edge element, OBJ with `l` lines or SWC; without radii they are derived from the mesh (docs/evaluation.md).',
+  ].join('\n'),
+  async run([meshFile, skeletonFile], options) {
+    const mesh = await readMesh(meshFile);
+    const skeleton = parseSkeleton(await readBytes(skeletonFile), skeletonFile);
+    const result = (await getCore()).evaluate(mesh, {
+      nodes: skeleton.nodes,
+      edges: skeleton.edges,
+      radii: options['derive-radii'] ? null : skeleton.radii,
+    });
+    const { reconError, median, p95, nodes, cycles, radiiSource } = result;
+    process.stdout.write(`${JSON.stringify({ reconError, median, p95, nodes, cycles, radiiSource })}\n`);
+  },
+};

@@ -1,8 +1,12 @@
 /**
  * The whole-shape mode: the pipeline runs in the worker with a progress bar, its result is stepped
  * through (Candidates, Packing, Regions, Skeleton) with each view drawing its layers, and a run can
- * be cancelled without harming the page.
+ * be cancelled without harming the page; the reconstruction toggle scores the skeleton.
  */
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
 import { expect, test, type Page } from '@playwright/test';
 import { canvasStats, clickMesh, frameDifference, hueCensus } from './pixels.ts';
 
@@ -204,4 +208,50 @@ test('a cancel that the worker cannot hear (a step that hangs) replaces the work
   await page.getByTestId('sk-compute').click();
   await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
   expect(await figure(page, 'sk-nodes')).toBeGreaterThan(1);
+});
+
+test('the reconstruction toggle shows the convolution surface and each vertex error, with the number the CLI prints', async ({ page }) => {
+  test.slow();
+  await openWhole(page, 12);
+  await page.getByTestId('sk-compute').click();
+  await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
+  await page.getByTestId('sk-next').click();
+  await page.getByTestId('sk-next').click();
+  await page.getByTestId('sk-next').click();
+  await expectView(page, 4, 'Skeleton');
+  const skeletonView = await canvasStats(page);
+
+  await page.getByTestId('sk-recon').check();
+  await expect(body(page)).toHaveAttribute('data-sk-recon', /\d/, { timeout: 60_000 });
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('sk-recon-result')).toBeVisible();
+  await expect(layerBox(page, 'sk-recon')).toBeChecked();
+  const shown = Number(await body(page).getAttribute('data-sk-recon'));
+  await expect(page.getByTestId('sk-recon-mean')).toHaveText(shown.toPrecision(3));
+  for (const id of ['sk-recon-median', 'sk-recon-p95']) await expect(page.getByTestId(id)).toHaveText(/^\d/);
+
+  // The same skeleton and score from the CLI (the worker evaluates in full precision).
+  const dir = mkdtempSync(path.join(tmpdir(), 'cscd-e2e-'));
+  try {
+    const run = (...args: string[]) => execFileSync(process.execPath, ['cli/cscd.mjs', ...args], { encoding: 'utf8' });
+    const sample = 'public/samples/spot.ply';
+    run('skeleton', sample, '--n', '12', '--out', path.join(dir, 's.json'));
+    const printed = JSON.parse(run('evaluate', sample, path.join(dir, 's.json'))) as { reconError: number };
+    expect(Math.abs(shown - printed.reconError) / printed.reconError).toBeLessThan(1e-9);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+
+  // The surface in the colours of the error (many hues, opaque) under the see-through reconstruction.
+  const recon = await canvasStats(page);
+  expect(recon.hueBins, 'the error colormap').toBeGreaterThanOrEqual(5);
+  expect(recon.saturatedFraction, 'the surface is coloured by the error').toBeGreaterThan(0.4);
+  expect(frameDifference(skeletonView, recon), 'the picture changed').toBeGreaterThan(10);
+  await layerBox(page, 'sk-recon').uncheck();
+  expect(frameDifference(recon, await canvasStats(page)), 'the reconstructed shell is drawn').toBeGreaterThan(1);
+
+  // Off again: the skeleton view as before.
+  await page.getByTestId('sk-recon').uncheck();
+  await expect(page.getByTestId('sk-recon-result')).toBeHidden();
+  expect(frameDifference(skeletonView, await canvasStats(page)), 'back to the skeleton view').toBeLessThan(2);
 });

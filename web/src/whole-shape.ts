@@ -3,22 +3,28 @@
  * candidate loops as they arrive, then shows the result view by view (Candidates, Packing, Regions,
  * Skeleton). Its viewer layers are named `sk-*`; the surface is shared with the single-source mode.
  *
+ * The reconstruction toggle adds the skeleton's convolution surface (`sk-recon`) over the input and
+ * colours the input by each vertex's reconstruction error, in whichever view is shown.
+ *
  * For tests: `document.body.dataset.skRun` is running | done | cancelled | failed,
- * `dataset.skeletonRuns` counts the results shown and `dataset.skStage` is the view shown.
+ * `dataset.skeletonRuns` counts the results shown, `dataset.skStage` is the view shown and
+ * `dataset.skRecon` the mean reconstruction error shown.
  */
 import { defaultOptions } from '../../lib/core/options.ts';
 import type { Options } from '../../lib/core/types.ts';
 import { SK_COLORS, SK_REGIONS_STAGE, SK_SKELETON_STAGE, SK_STAGES, SkeletonPanel } from './ui/skeleton-panel.ts';
 import {
   LoopSet,
+  ReconstructionLayer,
   candidateRadius,
+  errorVertexColors,
   regionColor,
   regionVertexColors,
   skeletonLayers,
 } from './viewer/skeleton-layers.ts';
 import type { Viewer } from './viewer/viewer.ts';
 import { WorkerError, type GeometryClient, type SkeletonJob } from './worker/client.ts';
-import type { PipelineNews, SkeletonReply } from './worker/protocol.ts';
+import type { EvaluationReply, PipelineNews, SkeletonReply } from './worker/protocol.ts';
 
 export interface WholeShapeContext {
   viewer: Viewer;
@@ -66,6 +72,10 @@ export class WholeShape {
   private wantedStage = 1;
   private regionColors: string[] = [];
   private vertexColors: Float32Array | null = null;
+  /** The evaluation of the result shown (null until the toggle first asks for it) and its colours. */
+  private evaluation: EvaluationReply | null = null;
+  private errorColors: Float32Array | null = null;
+  private evaluating = false;
   private runs = 0;
   private redrawTimer: number | null = null;
   private lastRedraw = -Infinity;
@@ -78,6 +88,7 @@ export class WholeShape {
   ) {
     panel.onCompute = () => void this.run();
     panel.onCancel = () => this.cancel();
+    panel.onRecon = () => void this.toggleRecon();
     panel.onSelect = (stage) => {
       if (!this.result) return;
       this.showStage(stage);
@@ -119,6 +130,7 @@ export class WholeShape {
     this.lastNews = null;
     this.vertexColors = null;
     this.regionColors = [];
+    this.forgetEvaluation();
     this.panel.endRun(false);
     this.panel.setStatus(null);
     this.panel.setResult(null);
@@ -154,7 +166,7 @@ export class WholeShape {
     const def = this.result ? SK_STAGES[this.stage - 1] : null;
     return this.ctx.viewer
       .listLayers()
-      .filter(([name]) => (def ? def.layers.includes(name) : name === 'sk-progress') || name === 'surface')
+      .filter(([name]) => (def ? this.viewLayers(def.layers).includes(name) : name === 'sk-progress') || name === 'surface')
       .map(([name, layer]) => ({
         name,
         label: layer.label,
@@ -177,6 +189,7 @@ export class WholeShape {
 
     // Forget the previous result; candidate loops are drawn as they come.
     this.result = null;
+    this.forgetEvaluation();
     this.lastNews = null;
     for (const [name] of viewer.listLayers()) if (isSkeletonLayer(name)) viewer.setLayer(name, null);
     this.progressLoops = new LoopSet(surface, 0.6 * candidateRadius(surface));
@@ -317,17 +330,72 @@ export class WholeShape {
     if (!this.active) return;
     const def = SK_STAGES[this.stage - 1];
     const { viewer, userHidden } = this.ctx;
+    const shown = this.viewLayers(def.layers);
     for (const [name, layer] of viewer.listLayers()) {
       if (name === 'surface') continue;
-      layer.object.visible = def.layers.includes(name) && !userHidden.has(name);
+      layer.object.visible = shown.includes(name) && !userHidden.has(name);
       layer.setDimmed?.(!!def.dimmed?.includes(name));
     }
     const surface = viewer.surface;
-    surface?.setRegionColorMix(this.stage === SK_REGIONS_STAGE ? 1 : 0);
-    surface?.setTranslucent(this.stage === SK_SKELETON_STAGE);
+    if (this.errorColors && this.panel.reconShown) {
+      // The error colours replace the view's colouring; the shell over an opaque surface shows where
+      // the reconstruction bulges out, the colours where it falls short.
+      surface?.setRegionColors(this.errorColors, 1);
+      surface?.setTranslucent(false);
+    } else {
+      if (this.vertexColors) surface?.setRegionColors(this.vertexColors, 0);
+      surface?.setRegionColorMix(this.stage === SK_REGIONS_STAGE ? 1 : 0);
+      surface?.setTranslucent(this.stage === SK_SKELETON_STAGE);
+    }
     const present = new Set(viewer.listLayers().map(([name]) => name));
     this.panel.setStage(this.stage, this.result, present, this.regionColors);
     this.ctx.updateLayerList();
     viewer.requestRender();
+  }
+
+  // -- reconstruction error ------------------------------------------------------------------------
+
+  /** A view's layers, plus the reconstructed surface while the toggle is on. */
+  private viewLayers(layers: string[]): string[] {
+    return this.errorColors && this.panel.reconShown ? [...layers, 'sk-recon'] : layers;
+  }
+
+  private forgetEvaluation(): void {
+    this.evaluation = null;
+    this.errorColors = null;
+    this.ctx.viewer.setLayer('sk-recon', null);
+    this.panel.setRecon({ kind: 'off' });
+    delete document.body.dataset.skRecon;
+  }
+
+  /** The toggle changed: evaluate the result once (in the worker), then show or hide it. */
+  private async toggleRecon(): Promise<void> {
+    const result = this.result;
+    if (this.panel.reconShown && result && !this.evaluation && !this.evaluating) {
+      this.evaluating = true;
+      this.panel.setRecon({ kind: 'busy' });
+      this.ctx.begin('reconstructing the surface from the skeleton…');
+      try {
+        const reply = await this.ctx.client.evaluate();
+        if (result !== this.result) return; // a new run replaced the skeleton meanwhile
+        this.evaluation = reply;
+        const e = reply.evaluation;
+        // The top of the colour bar at the 95th percentile: the worst vertices saturate, the rest spread.
+        this.errorColors = errorVertexColors(e.vertexError, e.p95);
+        this.ctx.layerColors.set('sk-recon', SK_COLORS.reconstruction);
+        this.ctx.viewer.setLayer('sk-recon', new ReconstructionLayer('Reconstructed surface', e.surface.positions, e.surface.triangles));
+      } catch (error) {
+        if (result === this.result) {
+          const message = error instanceof Error ? error.message : String(error);
+          this.panel.setRecon({ kind: 'failed', message: `The reconstruction failed: ${message}` });
+        }
+        return;
+      } finally {
+        this.evaluating = false;
+        this.ctx.end();
+      }
+    }
+    if (this.evaluation) this.panel.setRecon({ kind: 'done', reply: this.evaluation, max: this.evaluation.evaluation.p95 });
+    this.showStage(this.stage);
   }
 }

@@ -5,7 +5,8 @@
  */
 import { optionRanges } from '../../../lib/core/options.ts';
 import type { CandidateFate, Options } from '../../../lib/core/types.ts';
-import type { SkeletonReply } from '../worker/protocol.ts';
+import type { EvaluationReply, SkeletonReply } from '../worker/protocol.ts';
+import { colormapGradient } from '../viewer/colormap.ts';
 import { byTestId, formatMs, humanize, swatch } from './panel.ts';
 import { Stepper } from './stepper.ts';
 
@@ -17,6 +18,8 @@ export const SK_COLORS = {
   rejected: '#ff4f9a',
   node: '#ff6a2b',
   edge: '#ffb02e',
+  /** The reconstructed surface of the evaluation. */
+  reconstruction: '#9fc4ff',
 } as const;
 
 export interface SkeletonStageDef {
@@ -90,6 +93,8 @@ export class SkeletonPanel {
   onCancel: (() => void) | null = null;
   /** The user asks for another view (buttons, pills, keys). */
   onSelect: ((stage: number) => void) | null = null;
+  /** The reconstruction toggle changed. */
+  onRecon: ((on: boolean) => void) | null = null;
   /** Keys step the views only while the mode is shown. */
   active = false;
 
@@ -102,6 +107,7 @@ export class SkeletonPanel {
   private readonly nAuto = byTestId<HTMLInputElement>('opt-n-auto');
   private readonly seedInput = byTestId<HTMLInputElement>('opt-seed');
   private readonly pruneInput = byTestId<HTMLInputElement>('opt-prune-length');
+  private readonly recon = byTestId<HTMLInputElement>('sk-recon');
   private readonly stepper = new Stepper(
     { prev: 'sk-prev', next: 'sk-next', steps: 'sk-steps' },
     SK_STAGES.map((def) => def.title),
@@ -116,6 +122,8 @@ export class SkeletonPanel {
     this.seedInput.value = String(defaults.seed);
     this.pruneInput.value = String(defaults.pruneLengthFactor);
 
+    byTestId('sk-recon-colorbar').style.background = colormapGradient();
+    this.recon.addEventListener('change', () => this.onRecon?.(this.recon.checked));
     this.compute.addEventListener('click', () => this.onCompute?.());
     this.cancel.addEventListener('click', () => this.onCancel?.());
     this.stepper.onSelect = (stage) => this.onSelect?.(stage);
@@ -234,6 +242,35 @@ export class SkeletonPanel {
         return [dt, dd];
       }),
     );
+  }
+
+  get reconShown(): boolean {
+    return this.recon.checked;
+  }
+
+  /**
+   * The reconstruction block: off (unticked, for a new result), busy, failed, or the figures of an
+   * evaluation; `max` is the error at the top of the colour bar.
+   */
+  setRecon(state: { kind: 'off' } | { kind: 'busy' } | { kind: 'failed'; message: string } | { kind: 'done'; reply: EvaluationReply; max: number }): void {
+    const status = byTestId('sk-recon-status');
+    const result = byTestId('sk-recon-result');
+    if (state.kind === 'off') this.recon.checked = false;
+    status.hidden = state.kind !== 'busy' && state.kind !== 'failed';
+    status.textContent = state.kind === 'busy' ? 'Reconstructing the surface from the skeleton…' : state.kind === 'failed' ? state.message : '';
+    status.classList.toggle('error-text', state.kind === 'failed');
+    result.hidden = state.kind !== 'done' || !this.recon.checked;
+    if (state.kind !== 'done') return;
+    const e = state.reply.evaluation;
+    const set = (id: string, text: string) => (byTestId(id).textContent = text);
+    const format = (x: number) => x.toPrecision(3);
+    set('sk-recon-mean', format(e.reconError));
+    set('sk-recon-median', format(e.median));
+    set('sk-recon-p95', format(e.p95));
+    set('sk-recon-colorbar-max', format(state.max));
+    set('sk-recon-grid', `${e.grid.dims.join(' × ')} cells`);
+    set('sk-recon-time', formatMs(state.reply.timings.evaluateMs));
+    document.body.dataset.skRecon = String(e.reconError);
   }
 
   /** The view shown; `present`: layers with data; `regionColors`: one per region, for its legend. */

@@ -5,6 +5,7 @@
 import * as THREE from 'three';
 import type { SkeletonData } from '../worker/protocol.ts';
 import { SK_COLORS } from '../ui/skeleton-panel.ts';
+import { turbo } from './colormap.ts';
 import { DIM_GREY, DIM_MIX, SpheresLayer, type Layer, type SurfaceLayer } from './layers.ts';
 import { TubesLayer, graphSegments, liftOffSurface, polylineSegments } from './tubes.ts';
 import type { NamedLayer } from './separator-layers.ts';
@@ -155,6 +156,51 @@ export function regionVertexColors(vertexToNode: Uint32Array, nodeCount: number,
     out[3 * v] = c.r;
     out[3 * v + 1] = c.g;
     out[3 * v + 2] = c.b;
+  }
+  return out;
+}
+
+/** The skeleton's reconstructed (convolution) surface: a see-through shell over the input mesh. */
+export class ReconstructionLayer implements Layer {
+  readonly object: THREE.Mesh<THREE.BufferGeometry, THREE.MeshStandardMaterial>;
+
+  constructor(
+    readonly label: string,
+    positions: Float32Array,
+    triangles: Uint32Array,
+  ) {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+    geometry.setIndex(new THREE.BufferAttribute(triangles, 1));
+    geometry.computeVertexNormals();
+    geometry.computeBoundingSphere();
+    const material = new THREE.MeshStandardMaterial({
+      color: SK_COLORS.reconstruction,
+      roughness: 0.5,
+      transparent: true,
+      opacity: 0.3,
+      depthWrite: false,
+      side: THREE.DoubleSide,
+    });
+    this.object = new THREE.Mesh(geometry, material);
+  }
+
+  dispose(): void {
+    this.object.geometry.dispose();
+    this.object.material.dispose();
+  }
+}
+
+/** Linear RGB per vertex from its reconstruction error through the colormap, 0 to `max`. */
+export function errorVertexColors(errors: Float32Array, max: number): Float32Array {
+  const out = new Float32Array(3 * errors.length);
+  const color = new THREE.Color();
+  for (let v = 0; v < errors.length; v++) {
+    const [r, g, b] = turbo(max > 0 ? errors[v] / max : 0);
+    color.setRGB(r, g, b, THREE.SRGBColorSpace);
+    out[3 * v] = color.r;
+    out[3 * v + 1] = color.g;
+    out[3 * v + 2] = color.b;
   }
   return out;
 }

@@ -119,6 +119,11 @@ export class GeometryClient {
     return { result, cancel };
   }
 
+  /** The reconstruction error of the last skeleton the worker computed on the open mesh. */
+  evaluate(): Promise<ReplyFor['evaluate']> {
+    return this.request({ type: 'evaluate' });
+  }
+
   /** Test hook: the worker fails as if the WASM core had aborted, dies of an uncaught error, or hangs. */
   simulateCrash(how: 'abort' | 'uncaught' | 'hang' = 'abort'): Promise<never> {
     return this.request({ type: 'crash', how });

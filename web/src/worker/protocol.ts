@@ -5,7 +5,7 @@
  * or an `error` with the same id, and may send `progress` events for it before that. Large arrays
  * travel in transfer lists in both directions (see `transferables`).
  */
-import type { MeshFacts, Options, Separator, Skeleton } from '../../../lib/core/types.ts';
+import type { Evaluation, MeshFacts, Options, Separator, Skeleton } from '../../../lib/core/types.ts';
 import type { MeshFormat } from '../../../lib/io/types.ts';
 
 // ---------------------------------------------------------------------------------------------
@@ -64,6 +64,12 @@ export interface SkeletonRequest {
   options: Partial<Options>;
 }
 
+/** The reconstruction error (paper Sec. 5) of the last skeleton the worker computed on the open mesh. */
+export interface EvaluateRequest {
+  type: 'evaluate';
+  id: number;
+}
+
 /**
  * Asks the worker to stop the `skeleton` request with this `id` between two steps. It has no reply of
  * its own: the request it names answers with an `error` of kind `cancelled` (or with its result, when
@@ -74,7 +80,14 @@ export interface CancelRequest {
   id: number;
 }
 
-export type WorkerRequest = OpenRequest | DistanceRequest | SeparatorRequest | SkeletonRequest | CancelRequest | CrashRequest;
+export type WorkerRequest =
+  | OpenRequest
+  | DistanceRequest
+  | SeparatorRequest
+  | SkeletonRequest
+  | EvaluateRequest
+  | CancelRequest
+  | CrashRequest;
 
 // ---------------------------------------------------------------------------------------------
 // Worker -> page
@@ -154,6 +167,20 @@ export interface SkeletonReply {
   timings: { stage1Ms: number; stage2Ms: number; steps: number };
 }
 
+/** An Evaluation as it travels to the page: float32 arrays for the GPU, every buffer transferred. */
+export interface EvaluationData extends Omit<Evaluation, 'radii' | 'vertexError'> {
+  radii: Float32Array;
+  vertexError: Float32Array;
+}
+
+export interface EvaluationReply {
+  type: 'evaluation';
+  id: number;
+  evaluation: EvaluationData;
+  /** Wall time of the call in the worker. */
+  timings: { evaluateMs: number };
+}
+
 /**
  * `format`: the file is not a readable mesh; `core`: the core refused the input or computation;
  * both leave the worker usable. `crash`: the WASM core aborted or the worker hit an unexpected
@@ -169,7 +196,7 @@ export interface ErrorReply {
   message: string;
 }
 
-export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'distance' | 'separator' | 'sources' | 'stage2';
+export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'distance' | 'separator' | 'sources' | 'stage2' | 'evaluate';
 
 /** News of a pipeline run after one step (PipelineProgress with float32 loops, transferred). */
 export interface PipelineNews {
@@ -191,7 +218,7 @@ export interface ProgressEvent {
   pipeline?: PipelineNews;
 }
 
-export type WorkerReply = OpenedReply | DistanceReply | SeparatorReply | SkeletonReply | ErrorReply;
+export type WorkerReply = OpenedReply | DistanceReply | SeparatorReply | SkeletonReply | EvaluationReply | ErrorReply;
 export type WorkerMessage = WorkerReply | ProgressEvent;
 
 /** The reply type that answers each request type. */
@@ -200,6 +227,7 @@ export interface ReplyFor {
   distance: DistanceReply;
   separator: SeparatorReply;
   skeleton: SkeletonReply;
+  evaluate: EvaluationReply;
   cancel: never;
   crash: never;
 }

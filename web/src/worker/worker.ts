@@ -5,13 +5,14 @@
  */
 import { createCore } from '../../../lib/core/index.ts';
 import { defaultOptions } from '../../../lib/core/options.ts';
-import type { Core, Options, Pipeline, Separator, Skeleton, Surface } from '../../../lib/core/types.ts';
+import type { Core, MeshArrays, Options, Pipeline, Separator, Skeleton, SkeletonInput, Surface } from '../../../lib/core/types.ts';
 import { parseMesh } from '../../../lib/io/index.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
 import {
   transferables,
   type DistanceRequest,
   type ErrorKind,
+  type EvaluateRequest,
   type OpenRequest,
   type ProgressStage,
   type SeparatorData,
@@ -34,11 +35,14 @@ const corePromise: Promise<Core> = fetch(wasmUrl)
 corePromise.catch(() => {}); // reported when a request needs the core
 
 interface OpenMesh {
+  mesh: MeshArrays;
   vertexCount: number;
   surface: Surface | null;
   surfaceError: string | null;
   /** The source of the last separator request, for re-runs with other options. */
   lastSource: number | null;
+  /** The last skeleton computed, in full precision, for `evaluate`. */
+  lastSkeleton: SkeletonInput | null;
 }
 let current: OpenMesh | null = null;
 
@@ -110,10 +114,11 @@ async function open(request: OpenRequest): Promise<void> {
     surfaceError = message;
   }
   const prepareMs = performance.now() - t;
-  current = { vertexCount: facts.vertices, surface, surfaceError, lastSource: null };
+  current = { mesh, vertexCount: facts.vertices, surface, surfaceError, lastSource: null, lastSkeleton: null };
 
   const positions = request.withArrays ? new Float32Array(mesh.positions) : new Float32Array(0);
-  const triangles = request.withArrays ? mesh.triangles : new Uint32Array(0);
+  // A copy: the page gets its own (transferred); the worker keeps the mesh for `evaluate`.
+  const triangles = request.withArrays ? mesh.triangles.slice() : new Uint32Array(0);
   post(
     {
       type: 'opened',
@@ -294,6 +299,7 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
     const t = performance.now();
     const result = pipeline.finish();
     const stage2Ms = performance.now() - t;
+    current.lastSkeleton = { nodes: result.nodes, edges: result.edges, radii: result.radii };
     const data = skeletonToWire(result);
     const c = data.candidates;
     post(
@@ -304,6 +310,23 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
     pipeline.dispose();
     pipeline = null;
   }
+}
+
+// -- evaluation -------------------------------------------------------------------------------------
+
+async function evaluate(request: EvaluateRequest): Promise<void> {
+  const { id } = request;
+  if (!current?.lastSkeleton) throw new UserError('core', 'There is no skeleton to evaluate: compute one first.');
+  const core = await loadCore(id);
+  progress(id, 'evaluate', 'reconstructing the surface from the skeleton…');
+  const t = performance.now();
+  const result = core.evaluate(current.mesh, current.lastSkeleton);
+  const evaluateMs = performance.now() - t;
+  const evaluation = { ...result, radii: f32(result.radii), vertexError: f32(result.vertexError) };
+  post(
+    { type: 'evaluation', id, evaluation, timings: { evaluateMs } },
+    transferables(evaluation.radii, evaluation.vertexError, evaluation.surface.positions, evaluation.surface.triangles),
+  );
 }
 
 async function handle(request: WorkerRequest): Promise<void> {
@@ -317,6 +340,8 @@ async function handle(request: WorkerRequest): Promise<void> {
         return separator(request);
       case 'skeleton':
         return await skeleton(request);
+      case 'evaluate':
+        return await evaluate(request);
       case 'cancel':
         return; // handled on arrival
       case 'crash':

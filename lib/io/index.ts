@@ -2,6 +2,7 @@
  * Mesh file reading shared by the CLI (Node) and the page's worker (browser): plain bytes in,
  * typed arrays out, no Node APIs.
  */
+import { parseGlb } from './glb.ts';
 import { FORMAT_LABEL } from './mesh-builder.ts';
 import { parseObj } from './obj.ts';
 import { parseOff } from './off.ts';
@@ -13,13 +14,14 @@ import { MeshFormatError, type MeshFormat, type ParsedMesh } from './types.ts';
 export * from './types.ts';
 
 /** File name extensions of the supported formats, e.g. for a file picker's `accept`. */
-export const MESH_EXTENSIONS: readonly string[] = ['.obj', '.ply', '.stl', '.off'];
+export const MESH_EXTENSIONS: readonly string[] = ['.obj', '.ply', '.stl', '.off', '.glb'];
 
 const PARSERS: Record<MeshFormat, (bytes: Uint8Array) => ParsedMesh> = {
   obj: parseObj,
   ply: parsePly,
   stl: parseStl,
   off: parseOff,
+  glb: parseGlb,
 };
 
 /** The format a file name's extension stands for (case-insensitive), or null. */
@@ -66,6 +68,7 @@ const SNIFF_BYTES = 4096;
 /** The format the content itself shows (magic line, keyword or exact binary STL size), or null. */
 function sniffFormat(bytes: Uint8Array): MeshFormat | null {
   const head = latin1(bytes, 0, Math.min(bytes.length, SNIFF_BYTES));
+  if (head.startsWith('glTF')) return 'glb';
   if (/^ply\r?\n/.test(head)) return 'ply';
   if (OFF_HEADER.test(head.replace(/^(\s*#[^\n]*\n)*\s*/, ''))) return 'off';
   if (isBinaryStl(bytes) || startsWithSolid(bytes)) return 'stl';

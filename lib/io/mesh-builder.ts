@@ -2,7 +2,7 @@
 import { MeshFormatError, type MeshFormat, type ParsedMesh } from './types.ts';
 
 /** How each format names itself at the start of error messages and warnings. */
-export const FORMAT_LABEL: Record<MeshFormat, string> = { obj: 'OBJ', ply: 'PLY', stl: 'STL', off: 'OFF' };
+export const FORMAT_LABEL: Record<MeshFormat, string> = { obj: 'OBJ', ply: 'PLY', stl: 'STL', off: 'OFF', glb: 'GLB' };
 
 export class MeshBuilder {
   private positions: Float64Array;

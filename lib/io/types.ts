@@ -1,5 +1,5 @@
 /** Mesh file formats read by CSCD Studio (CLI and page alike). */
-export type MeshFormat = 'obj' | 'ply' | 'stl' | 'off';
+export type MeshFormat = 'obj' | 'ply' | 'stl' | 'off' | 'glb';
 
 export interface ParsedMesh {
   positions: Float64Array;

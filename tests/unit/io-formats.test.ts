@@ -71,7 +71,7 @@ describe('format detection', () => {
     expect(formatFromName('x.tar.gz')).toBeNull();
     expect(formatFromName('obj')).toBeNull();
     expect(formatFromName('dir.obj/file')).toBeNull();
-    expect(MESH_EXTENSIONS).toEqual(['.obj', '.ply', '.stl', '.off']);
+    expect(MESH_EXTENSIONS).toEqual(['.obj', '.ply', '.stl', '.off', '.glb']);
   });
 
   it('reads PLY content named .obj as PLY, with a warning', () => {

@@ -3,6 +3,7 @@ import { readFile } from 'node:fs/promises';
 import { loadCoreNode } from '../lib/core/node.ts';
 import type { Core } from '../lib/core/types.ts';
 import { parseMesh, type ParsedMesh } from '../lib/io/index.ts';
+import { repairMesh } from '../lib/io/repair.ts';
 
 export interface OptionSpec {
   type: 'string' | 'boolean';
@@ -52,9 +53,24 @@ export async function readBytes(file: string): Promise<Uint8Array> {
   }
 }
 
-/** Reads and parses a mesh file; parser warnings go to stderr unless the command reports them itself. */
-export async function readMesh(file: string, { printWarnings = true } = {}): Promise<ParsedMesh> {
-  const mesh = parseMesh(await readBytes(file), file);
-  if (printWarnings) for (const warning of mesh.warnings) process.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
-  return mesh;
+/** A mesh file as every command works on it: parsed, then repaired (lib/io/repair.ts). */
+export interface InputMesh extends ParsedMesh {
+  /** What the repair did, one sentence each; empty when the mesh is as in the file. */
+  repairs: string[];
+  /** Index of every vertex of the file in the repaired mesh, -1 for removed ones. */
+  vertexMap: Int32Array;
+}
+
+/**
+ * Reads, parses and repairs a mesh file; parser warnings and repairs go to stderr unless the command
+ * reports them itself.
+ */
+export async function readMesh(file: string, { printWarnings = true } = {}): Promise<InputMesh> {
+  const parsed = parseMesh(await readBytes(file), file);
+  const { mesh, repairs, vertexMap } = repairMesh(parsed);
+  if (printWarnings) {
+    for (const warning of parsed.warnings) process.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
+    for (const repair of repairs) process.stderr.write(`cscd: repaired: ${repair}\n`);
+  }
+  return { ...parsed, ...mesh, repairs, vertexMap };
 }

@@ -9,15 +9,17 @@ export const distance: Command = {
     source: { type: 'string', value: 'V', required: true, description: 'source vertex index (0-based)' },
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
-  details: 'Writes {"distance":[...]} with one heat-method distance per vertex, in the order of the file.',
+  details: 'Writes {"distance":[...]} with one heat-method distance per vertex, in the order of the file (null for\nvertices in other components and for vertices the repair removed).',
   async run([file], options) {
     const mesh = await readMesh(file);
-    const vertexCount = mesh.positions.length / 3;
-    const source = parseVertex(String(options.source), vertexCount);
+    // Vertices are numbered as in the file, in and out, even when the repair renumbered them.
+    const source = parseVertex(String(options.source), mesh.vertexMap.length);
+    if (mesh.vertexMap[source] < 0) throw new UsageError(`--source ${source} is a vertex used by no face, which the repair removed`);
     const surface = (await getCore()).openSurface(mesh);
     let json: string;
     try {
-      json = JSON.stringify({ distance: Array.from(surface.distanceFromVertex(source)) });
+      const distance = surface.distanceFromVertex(mesh.vertexMap[source]);
+      json = JSON.stringify({ distance: Array.from(mesh.vertexMap, (v) => (v < 0 ? null : distance[v])) });
     } finally {
       surface.dispose();
     }

@@ -1,7 +1,7 @@
 // The core's answers to arrays that are not a usable surface: clear errors naming elements, never a crash.
 import { beforeAll, describe, expect, it } from 'vitest';
-import { CoreError, loadCoreNode, type Core, type MeshArrays } from '../../lib/core/node.ts';
-import { icosphere, readMesh } from './support/meshes.ts';
+import { CoreError, loadCoreNode, type Core } from '../../lib/core/node.ts';
+import { TETRAHEDRON, icosphere, meshOf as mesh, readMesh } from './support/meshes.ts';
 import { sharedMesh } from '../paths.ts';
 
 let core: Core;
@@ -9,14 +9,7 @@ beforeAll(async () => {
   core = await loadCoreNode();
 });
 
-const mesh = (positions: number[], triangles: number[]): MeshArrays => ({
-  positions: Float64Array.from(positions),
-  triangles: Uint32Array.from(triangles),
-});
-
-// A closed, outward-oriented tetrahedron.
-const tetPositions = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1];
-const tetTriangles = [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3];
+const { positions: tetPositions, triangles: tetTriangles } = TETRAHEDRON;
 
 function expectCoreError(action: () => unknown, fragment: RegExp) {
   let error: unknown;

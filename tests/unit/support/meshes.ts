@@ -9,6 +9,14 @@ export function readMesh(file: string): MeshArrays {
   return parseMesh(new Uint8Array(readFileSync(file)), path.basename(file));
 }
 
+/** Arrays of a mesh written out in a test. */
+export function meshOf(positions: number[], triangles: number[]): MeshArrays {
+  return { positions: Float64Array.from(positions), triangles: Uint32Array.from(triangles) };
+}
+
+/** A closed, outward-oriented tetrahedron on the origin and the unit axis points. */
+export const TETRAHEDRON = { positions: [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1], triangles: [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3] };
+
 /** Unit icosphere: an icosahedron subdivided `levels` times, vertices projected to the sphere. */
 export function icosphere(levels: number): MeshArrays {
   const t = (1 + Math.sqrt(5)) / 2;

@@ -64,13 +64,14 @@ test('loads the sample mesh and draws it lit', async ({ page }) => {
   expect(stats.hueBins, 'no colormap yet').toBeLessThanOrEqual(2);
 });
 
-test('a click on the mesh shows geodesic distance (stage 1, step 1) as a colormap', async ({ page }) => {
+test('a click on the mesh shows geodesic distance (the Geodesics stage) as a colormap', async ({ page }) => {
   const before = await openSample(page);
   const after = await pickAndWait(page, before);
   expectColormap(before, after);
   await expect(page.getByTestId('timing-separator')).toHaveText(/\d+(\.\d)? (ms|s)/);
   await expect(page.getByTestId('timing-stage-distance')).toHaveText(/\d+(\.\d)? (ms|s)/);
-  await expect(page.getByTestId('stage-index')).toHaveText('1');
+  await expect(page.getByTestId('stage-index')).toHaveText('2');
+  await expect(page.locator('body')).toHaveAttribute('data-stage', 'geodesics');
   await expect(page.getByTestId('distance-max')).toHaveText(/^\d/);
   await expect(page.getByTestId('status')).toContainText('Ready');
 });

@@ -6,6 +6,7 @@
 import { readFileSync } from 'node:fs';
 import { expect, test } from '@playwright/test';
 import { sharedMesh } from '../paths.ts';
+import { setCheck, setNumber } from './studio.ts';
 
 test('opening and skeletonising a mesh makes no request beyond the page itself', async ({ page, baseURL }) => {
   test.slow();
@@ -31,12 +32,11 @@ test('opening and skeletonising a mesh makes no request beyond the page itself',
     buffer: readFileSync(sharedMesh('hand.ply')),
   });
   await expect(page.getByTestId('facts-vertices')).toHaveText('10345', { timeout: 60_000 });
-  await page.getByTestId('mode-whole').click();
-  await page.getByTestId('opt-n-auto').uncheck();
-  await page.getByTestId('opt-n').fill('8');
-  await page.getByTestId('sk-compute').click();
+  await setCheck(page, 'n-auto', false);
+  await setNumber(page, 'n', 8);
+  // Entering the Reconstruction stage computes the skeleton, then its reconstruction.
+  await page.getByTestId('stage-reconstruction').click();
   await expect(page.locator('body')).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
-  await page.getByTestId('sk-recon').check();
   await expect(page.locator('body')).toHaveAttribute('data-sk-recon', /\d/, { timeout: 60_000 });
 
   const foreign = requests.filter((url) => !url.startsWith(`${origin}/`) && !url.startsWith('blob:') && !url.startsWith('data:'));

@@ -1,7 +1,8 @@
 /**
- * The whole-shape mode: the pipeline runs in the worker with a progress bar, its result is stepped
- * through (Candidates, Packing, Regions, Skeleton) with each view drawing its layers, and a run can
- * be cancelled without harming the page; the reconstruction toggle scores the skeleton.
+ * The whole-shape stages of the timeline: entering All separators runs the pipeline in the worker
+ * with a progress bar, its result is stepped through (All separators, Packing, Regions, Skeleton)
+ * with each stage drawing its layers, a run can be cancelled without harming the page, and the
+ * Reconstruction stage scores the skeleton.
  */
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync } from 'node:fs';
@@ -9,6 +10,12 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { expect, test, type Page } from '@playwright/test';
 import { canvasStats, clickMesh, frameDifference, hueCensus } from './pixels.ts';
+import { body, enterStage, expectStage, figure, layerBox, openPage, setCheck, setNumber, waitForState } from './studio.ts';
+
+async function expectView(page: Page, key: string, title: string): Promise<void> {
+  await expectStage(page, key, title);
+  await waitForState(page, 'ready');
+}
 
 /** Hue ranges (degrees) of the whole-shape layers (web/src/ui/skeleton-panel.ts SK_COLORS). */
 const HUES = {
@@ -17,23 +24,11 @@ const HUES = {
   skeleton: [[5, 45]], // nodes #ff6a2b, edges #ffb02e
 } as const;
 
-const body = (page: Page) => page.locator('body');
-
-async function waitForState(page: Page, state: string): Promise<void> {
-  await expect(body(page)).toHaveAttribute('data-state', state, { timeout: 60_000 });
-}
-
-/** Opens the sample and switches to the whole-shape mode with N sources. */
+/** Opens the sample with N sources set (the run starts when a whole-shape stage is entered). */
 async function openWhole(page: Page, n: number): Promise<void> {
-  await page.goto('/');
-  await waitForState(page, 'ready');
-  await expect(page.getByTestId('facts-vertices')).toHaveText('2930');
-  await page.getByTestId('mode-whole').click();
-  await expect(body(page)).toHaveAttribute('data-mode', 'whole');
-  await expect(page.getByTestId('sk-compute')).toBeVisible();
-  await expect(page.getByTestId('separator')).toBeHidden();
-  await page.getByTestId('opt-n-auto').uncheck();
-  await page.getByTestId('opt-n').fill(String(n));
+  await openPage(page);
+  await setCheck(page, 'n-auto', false);
+  await setNumber(page, 'n', n);
 }
 
 /** Records every value the progress bar shows ("done/total"), from the page itself. */
@@ -51,23 +46,12 @@ async function recordProgress(page: Page): Promise<void> {
 
 const progressSeen = (page: Page) => page.evaluate(() => (window as unknown as { progressSeen: string[] }).progressSeen);
 
-const layerBox = (page: Page, name: string) => page.locator(`#layers input[data-layer="${name}"]`);
-
-async function expectView(page: Page, stage: number, title: string): Promise<void> {
-  await expect(body(page)).toHaveAttribute('data-sk-stage', String(stage));
-  await expect(page.getByTestId('sk-stage-title')).toHaveText(title);
-  await expect(page.getByTestId('sk-stage-caption')).not.toBeEmpty();
-  await waitForState(page, 'ready');
-}
-
-const figure = async (page: Page, id: string) => Number((await page.getByTestId(id).textContent())?.match(/^\d+/)?.[0] ?? NaN);
-
-test('Compute skeleton shows progress, then candidates, packing, regions and the skeleton', async ({ page }) => {
+test('entering All separators shows progress, then candidates, packing, regions and the skeleton', async ({ page }) => {
   test.slow(); // a pipeline run and a dozen pixel reads on a software renderer
   await openWhole(page, 20);
   const plain = await canvasStats(page);
   await recordProgress(page);
-  await page.getByTestId('sk-compute').click();
+  await enterStage(page, 'separators');
   await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
   await waitForState(page, 'ready');
 
@@ -98,34 +82,36 @@ test('Compute skeleton shows progress, then candidates, packing, regions and the
   await expect(page.getByTestId('sk-timing-stage1')).toHaveText(/\d+(\.\d)? (ms|s)/);
   await expect(page.getByTestId('sk-timing-stage2')).toHaveText(/\d+(\.\d)? (ms|s)/);
 
-  // 1. Candidates: packed loops in cyan, the rejected ones in pink.
-  await expectView(page, 1, 'Candidates');
-  await expect(page.getByTestId('sk-prev')).toBeDisabled();
+  for (const key of ['separators', 'packing', 'regions', 'skeleton']) {
+    await expect(page.getByTestId(`stage-time-${key}`), `the time of ${key} under its pill`).toHaveText(/\d+(\.\d)? (ms|s)/);
+  }
+
+  // All separators: packed loops in cyan, the rejected ones in pink.
+  await expectView(page, 'separators', 'All separators');
   const candidatesView = await hueCensus(page, HUES);
   expect(candidatesView.counts.packed, 'cyan pixels of the packed loops').toBeGreaterThan(150);
   if (candidates > packed) expect(candidatesView.counts.rejected, 'pink pixels of the rejected loops').toBeGreaterThan(50);
-  await expect(page.getByTestId('sk-stage-legend')).toContainText('packed');
+  await expect(page.getByTestId('stage-legend')).toContainText('packed');
 
-  // 2. Packing: only the packed loops.
-  await page.getByTestId('sk-next').click();
-  await expectView(page, 2, 'Packing');
+  // Packing: only the packed loops.
+  await page.getByTestId('stage-next').click();
+  await expectView(page, 'packing', 'Packing');
   const packingView = await hueCensus(page, HUES);
   expect(packingView.counts.packed).toBeGreaterThan(150);
   expect(packingView.counts.rejected, 'no rejected loops any more').toBeLessThan(Math.max(20, candidatesView.counts.rejected * 0.1));
   await expect(layerBox(page, 'sk-rejected')).toHaveCount(0);
 
-  // 3. Regions: the surface in many distinct colours.
+  // Regions: the surface in many distinct colours.
   await page.keyboard.press('ArrowRight');
-  await expectView(page, 3, 'Regions');
+  await expectView(page, 'regions', 'Regions');
   const regions = await canvasStats(page);
   expect(regions.saturatedFraction, 'the surface is coloured by region').toBeGreaterThan(0.5);
   expect(regions.hueBins, 'regions in many hues').toBeGreaterThanOrEqual(Math.min(5, nodes));
   expect(frameDifference(plain, regions), 'the picture changed').toBeGreaterThan(15);
 
-  // 4. Skeleton: warm spheres and tubes inside a see-through mesh.
-  await page.getByTestId('sk-next').click();
-  await expectView(page, 4, 'Skeleton');
-  await expect(page.getByTestId('sk-next')).toBeDisabled();
+  // Skeleton: warm spheres and tubes inside a see-through mesh.
+  await page.getByTestId('stage-next').click();
+  await expectView(page, 'skeleton', 'Skeleton');
   const skeleton = await hueCensus(page, HUES);
   const { width, height } = await canvasStats(page);
   expect(skeleton.counts.skeleton, 'orange pixels of the skeleton').toBeGreaterThan(300);
@@ -138,28 +124,29 @@ test('Compute skeleton shows progress, then candidates, packing, regions and the
   await layerBox(page, 'sk-nodes').check();
   await layerBox(page, 'sk-edges').check();
 
-  // Back to the single-source mode: its hint, no skeleton layers, an opaque mesh, and clicks work.
-  await page.getByTestId('mode-single').click();
-  await expect(body(page)).toHaveAttribute('data-mode', 'single');
+  // Back to the Mesh stage: no skeleton layers, an opaque mesh, and a click runs stage 1.
+  await enterStage(page, 'mesh');
   await waitForState(page, 'ready');
   const single = await canvasStats(page);
   expect(frameDifference(plain, single), 'the plain mesh again').toBeLessThan(2);
   await clickMesh(page, single);
   await expect(body(page)).toHaveAttribute('data-separator-runs', '1', { timeout: 30_000 });
-  await waitForState(page, 'ready');
+  await expectView(page, 'geodesics', 'Geodesics');
   expect((await canvasStats(page)).hueBins, 'the distance colormap').toBeGreaterThanOrEqual(5);
 
-  // And to the whole shape again: the skeleton view as it was left.
-  await page.getByTestId('mode-whole').click();
-  await expectView(page, 4, 'Skeleton');
+  // And to the skeleton again: as it was left, not computed again.
+  await enterStage(page, 'skeleton');
+  await expectView(page, 'skeleton', 'Skeleton');
+  await expect(body(page)).toHaveAttribute('data-skeleton-runs', '1');
   expect((await hueCensus(page, HUES)).counts.skeleton).toBeGreaterThan(300);
 });
 
 test('a skeleton run can be cancelled and the page stays usable', async ({ page }) => {
   test.slow();
   await openWhole(page, 400);
-  await page.getByTestId('sk-compute').click();
+  await enterStage(page, 'separators');
   await expect(body(page)).toHaveAttribute('data-sk-run', 'running');
+  await expect(page.getByTestId('stage-separators')).toHaveAttribute('data-state', 'running');
   await expect(page.getByTestId('sk-progress')).toBeVisible();
   await expect.poll(async () => Number(await page.getByTestId('sk-progress').getAttribute('data-done')), { timeout: 30_000 }).toBeGreaterThan(0);
   await expect(page.getByTestId('sk-progress')).toHaveAttribute('data-total', '400');
@@ -177,8 +164,8 @@ test('a skeleton run can be cancelled and the page stays usable', async ({ page 
   expect(done, 'stopped long before the end').toBeLessThan(400);
 
   // A later run works.
-  await page.getByTestId('opt-n').fill('12');
-  await page.getByTestId('opt-seed').fill('7');
+  await setNumber(page, 'n', 12);
+  await setNumber(page, 'seed', 7);
   await page.getByTestId('sk-compute').click();
   await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
   await expect(page.getByTestId('sk-n')).toHaveText('12');
@@ -192,7 +179,7 @@ test('a cancel that the worker cannot hear (a step that hangs) replaces the work
   await openWhole(page, 12);
   // The worker is stuck for a minute before it gets to the skeleton request.
   await page.evaluate(() => void window.cscd!.simulateCrash('hang'));
-  await page.getByTestId('sk-compute').click();
+  await enterStage(page, 'separators');
   await expect(body(page)).toHaveAttribute('data-sk-run', 'running');
   await page.getByTestId('sk-cancel').click();
   await expect(page.getByTestId('sk-cancel')).toBeDisabled();
@@ -210,22 +197,22 @@ test('a cancel that the worker cannot hear (a step that hangs) replaces the work
   expect(await figure(page, 'sk-nodes')).toBeGreaterThan(1);
 });
 
-test('the reconstruction toggle shows the convolution surface and each vertex error, with the number the CLI prints', async ({ page }) => {
+test('the Reconstruction stage shows the convolution surface and each vertex error, with the number the CLI prints', async ({ page }) => {
   test.slow();
   await openWhole(page, 12);
-  await page.getByTestId('sk-compute').click();
+  await enterStage(page, 'skeleton');
   await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
-  await page.getByTestId('sk-next').click();
-  await page.getByTestId('sk-next').click();
-  await page.getByTestId('sk-next').click();
-  await expectView(page, 4, 'Skeleton');
+  await expectView(page, 'skeleton', 'Skeleton');
   const skeletonView = await canvasStats(page);
+  await expect(page.getByTestId('stage-reconstruction')).toHaveAttribute('data-state', 'pending');
 
-  await page.getByTestId('sk-recon').check();
+  // Entering the stage evaluates the skeleton (once).
+  await enterStage(page, 'reconstruction');
   await expect(body(page)).toHaveAttribute('data-sk-recon', /\d/, { timeout: 60_000 });
-  await waitForState(page, 'ready');
+  await expectView(page, 'reconstruction', 'Reconstruction');
   await expect(page.getByTestId('sk-recon-result')).toBeVisible();
   await expect(layerBox(page, 'sk-recon')).toBeChecked();
+  await expect(page.getByTestId('stage-time-reconstruction')).toHaveText(/\d+(\.\d)? (ms|s)/);
   const shown = Number(await body(page).getAttribute('data-sk-recon'));
   await expect(page.getByTestId('sk-recon-mean')).toHaveText(shown.toPrecision(3));
   for (const id of ['sk-recon-median', 'sk-recon-p95']) await expect(page.getByTestId(id)).toHaveText(/^\d/);
@@ -250,8 +237,11 @@ test('the reconstruction toggle shows the convolution surface and each vertex er
   await layerBox(page, 'sk-recon').uncheck();
   expect(frameDifference(recon, await canvasStats(page)), 'the reconstructed shell is drawn').toBeGreaterThan(1);
 
-  // Off again: the skeleton view as before.
-  await page.getByTestId('sk-recon').uncheck();
+  await layerBox(page, 'sk-recon').check();
+
+  // Back at the Skeleton stage: the skeleton view as before.
+  await enterStage(page, 'skeleton');
+  await waitForState(page, 'ready');
   await expect(page.getByTestId('sk-recon-result')).toBeHidden();
   expect(frameDifference(skeletonView, await canvasStats(page)), 'back to the skeleton view').toBeLessThan(2);
 });

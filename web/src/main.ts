@@ -1,56 +1,51 @@
 /**
- * Wiring: files -> worker (parse, inspect, prepare) -> viewer + panel. Two modes: "One source"
- * (clicks -> worker: stage 1 of CSCD-M from the picked vertex -> layers shown stage by stage) and
- * "Whole shape" (whole-shape.ts: the whole pipeline with progress and cancel -> skeleton views).
- * `document.body.dataset.state` is loading | ready | computing | error, `dataset.mode` single | whole,
- * `dataset.stage` the stage shown and `dataset.separatorRuns` counts the stage-1 replies shown, for tests.
+ * Wiring: files and samples -> worker (parse, inspect, prepare) -> viewer + panel, and the stage
+ * timeline. The timeline's stages (stage-defs.ts) are views over two controllers: SingleSource (stage
+ * 1 from one clicked or random vertex) and WholeShape (the whole pipeline). Entering a stage computes
+ * what it needs; changing a parameter re-runs only what depends on it; the address bar keeps the view.
+ *
+ * `document.body.dataset.state` is loading | ready | computing | error, `dataset.stage` the stage shown
+ * and `dataset.separatorRuns` counts the stage-1 replies shown, for tests.
  */
 import './style.css';
-import { defaultOptions } from '../../lib/core/options.ts';
-import type { Options } from '../../lib/core/types.ts';
 import { MESH_EXTENSIONS } from '../../lib/io/index.ts';
-import { niceSpacing } from './viewer/colormap.ts';
-import { SpheresLayer, SurfaceLayer } from './viewer/layers.ts';
-import { separatorLayers } from './viewer/separator-layers.ts';
-import { Viewer, type Pick } from './viewer/viewer.ts';
-import { GeometryClient, WorkerError } from './worker/client.ts';
-import type { OpenedReply, SeparatorReply } from './worker/protocol.ts';
+import { SingleSource, type StudioContext } from './single-source.ts';
+import { STAGES, SOURCE_STAGES, stageDef, stageIndex, type StageKey } from './stage-defs.ts';
+import { baseName, canvasPng, saveFile } from './ui/downloads.ts';
 import { installFileSources } from './ui/files.ts';
-import { Panel } from './ui/panel.ts';
-import { COLORS, LAYER_STAGE, STAGES, StagePanel } from './ui/stages.ts';
+import { DEFAULT_SAMPLE, installGallery, markSample, sampleByName, type Sample } from './ui/gallery.ts';
+import { Panel, byTestId, formatMs, swatch } from './ui/panel.ts';
+import { ParamsPanel, STAGE1_OPTIONS } from './ui/params.ts';
+import { separatorCaption, separatorStageTimes } from './ui/separator-panel.ts';
 import { SkeletonPanel } from './ui/skeleton-panel.ts';
-import { WholeShape, isSkeletonLayer } from './whole-shape.ts';
+import { Timeline, type PillState } from './ui/timeline.ts';
+import { readUrl, writeUrl } from './ui/url-state.ts';
+import { SurfaceLayer } from './viewer/layers.ts';
+import { Viewer } from './viewer/viewer.ts';
+import { WholeShape } from './whole-shape.ts';
+import { GeometryClient, WorkerError } from './worker/client.ts';
+import type { OpenedReply, WriteRequest } from './worker/protocol.ts';
 
-const SAMPLE = 'samples/spot.ply';
-
+const initial = readUrl();
 const panel = new Panel();
 const viewer = new Viewer(document.querySelector<HTMLElement>('#viewport')!);
+const timeline = new Timeline(document.querySelector<HTMLElement>('#timeline')!);
+const params = new ParamsPanel(document.querySelector<HTMLElement>('#params')!, initial.options);
 const flatBox = document.querySelector<HTMLInputElement>('#opt-flat')!;
 const isolinesBox = document.querySelector<HTMLInputElement>('#opt-isolines')!;
-const targetSelect = document.querySelector<HTMLSelectElement>('#opt-target')!;
-const sphereBox = document.querySelector<HTMLInputElement>('#opt-sphere')!;
-const stagePanel = new StagePanel();
-const optionsHint = document.querySelector<HTMLElement>('#options-hint')!;
 const viewportHint = document.querySelector<HTMLElement>('#viewport-hint')!;
+const gallery = document.querySelector<HTMLElement>('#gallery')!;
 
-type Mode = 'single' | 'whole';
-let mode: Mode = 'single';
-
+/** The stage the user chose (a source stage a run did not reach shows the last one it did). */
+let wanted: StageKey = 'mesh';
+/** Layers the user switched off in the layer list. */
+const userHidden = new Set<string>();
+const layerColors = new Map<string, string>();
 let opening = 0;
 let computing = 0;
 let failed = false;
-/** Bumped whenever a different mesh is shown, so late replies for the old one are dropped. */
-let meshGeneration = 0;
-let latestSeparatorRequest = 0;
-
-/** The stage-1 run shown, the stage shown, and the layers the user switched off. */
-let separator: SeparatorReply | null = null;
-let stage = 1;
-/** The stage the user stepped to; a run that stopped earlier shows its last stage, the next run this one again. */
-let wantedStage = 1;
-const userHidden = new Set<string>();
-const layerColors = new Map<string, string>([['source', COLORS.source]]);
-let separatorRuns = 0;
+/** The open mesh: its file name, the sample it is (null: a file of the user's) and why it cannot be computed on. */
+let mesh: { fileName: string; sample: string | null; surfaceError: string | null; openMs: number } | null = null;
 
 function updateState(): void {
   const state = opening > 0 ? 'loading' : computing > 0 ? 'computing' : failed ? 'error' : 'ready';
@@ -64,11 +59,29 @@ function fail(title: string, error: unknown): void {
   panel.showError(title, error instanceof Error ? error.message : String(error));
 }
 
-function startAction(status: string): void {
-  failed = false;
-  panel.clearError();
-  panel.setStatus(status, true);
-}
+const ctx: StudioContext = {
+  viewer,
+  client: null as unknown as GeometryClient, // set below, once the client exists
+  layerColors,
+  options: () => params.options,
+  begin: (status) => {
+    computing++;
+    failed = false;
+    panel.clearError();
+    panel.setStatus(status, true);
+    updateState();
+  },
+  end: () => {
+    computing--;
+    updateState();
+  },
+  fail,
+  changed: () => refresh(),
+  progressed: () => {
+    timeline.show(shownStage(), pillStates());
+    updateTimes();
+  },
+};
 
 /** Shows the worker being replaced until the mesh is open in the new one. */
 function awaitRestart(restored: Promise<unknown>): void {
@@ -88,44 +101,52 @@ const client = new GeometryClient({
   onCrash: (message, restored) => {
     failed = true;
     panel.showError('The geometry worker stopped and was restarted', message);
+    whole.invalidate(); // the new worker does not have the skeleton any more
     awaitRestart(restored);
   },
   // The worker was replaced to stop a cancelled run: the mesh is re-opened, no error to show.
   onRestart: awaitRestart,
 });
+ctx.client = client;
+const single = new SingleSource(ctx);
+const whole = new WholeShape(ctx);
 
 // -- opening meshes ------------------------------------------------------------------------------
 
-async function openBytes(fileName: string, bytes: ArrayBuffer): Promise<void> {
-  whole.cancel(); // a running skeleton would hold up the open
+async function openBytes(fileName: string, bytes: ArrayBuffer, sample: string | null): Promise<boolean> {
+  whole.invalidate(); // a running skeleton would hold up the open
   opening++;
-  startAction(`opening ${fileName}…`);
+  failed = false;
+  panel.clearError();
+  panel.setStatus(`opening ${fileName}…`, true);
   updateState();
   try {
-    showMesh(await client.open(fileName, bytes));
+    showMesh(await client.open(fileName, bytes), sample);
+    return true;
   } catch (error) {
     // A crash is reported by onCrash; the previous mesh stays either way.
     if (!(error instanceof WorkerError && error.kind === 'crash')) fail(`Could not open ${fileName}`, error);
+    return false;
   } finally {
     opening--;
     updateState();
+    refresh();
   }
 }
 
-function showMesh(reply: OpenedReply): void {
-  meshGeneration++;
-  separator = null;
-  stage = 1;
-  wantedStage = 1;
+function showMesh(reply: OpenedReply, sample: string | null): void {
+  const t = reply.timings;
+  mesh = { fileName: reply.fileName, sample, surfaceError: reply.surfaceError, openMs: t.parseMs + t.inspectMs + t.prepareMs };
+  wanted = 'mesh';
   userHidden.clear();
-  stagePanel.setResult(null);
-  delete document.body.dataset.stage;
   viewer.clearLayers();
+  single.reset();
+  whole.reset();
   viewer.setLayer('surface', new SurfaceLayer(reply.positions, reply.triangles));
   viewer.surface!.setFlatShading(flatBox.checked);
   viewer.surface!.setIsolines(isolinesBox.checked);
-  whole.reset();
   viewer.frame();
+  markSample(gallery, sample);
 
   panel.setFile(reply.fileName, reply.format);
   panel.setFacts(reply.facts);
@@ -147,246 +168,224 @@ async function openFile(file: File): Promise<void> {
     updateState();
     return;
   }
-  await openBytes(file.name, bytes);
+  await openBytes(file.name, bytes, null);
 }
 
-async function openSample(): Promise<void> {
-  const name = SAMPLE.split('/').pop()!;
+async function openSample(sample: Sample): Promise<boolean> {
   try {
-    const response = await fetch(SAMPLE);
-    if (!response.ok) throw new Error(`HTTP ${response.status} for ${SAMPLE}`);
-    await openBytes(name, await response.arrayBuffer());
+    const response = await fetch(`samples/${sample.file}`);
+    if (!response.ok) throw new Error(`HTTP ${response.status} for samples/${sample.file}`);
+    return await openBytes(sample.file, await response.arrayBuffer(), sample.name);
   } catch (error) {
-    fail(`Could not load the sample mesh ${name}`, error);
+    fail(`Could not load the sample mesh ${sample.file}`, error);
     updateState();
+    return false;
   }
 }
 
-// -- stage 1: one separator from the picked vertex ---------------------------------------------
+// -- stages ----------------------------------------------------------------------------------------
 
-/** Names of the layers a stage-1 run adds (besides the surface's colormap and the source marker). */
-const SEPARATOR_LAYERS = Object.keys(LAYER_STAGE).filter((name) => name !== 'surface' && name !== 'source');
+const canCompute = () => !!viewer.surface && !mesh?.surfaceError;
 
-function currentOptions(): Options {
-  return { ...defaultOptions, target: targetSelect.value as Options['target'], sphere: sphereBox.checked };
+/** The stage shown: the one wanted, or the last one the stage-1 run reached when it stopped earlier. */
+function shownStage(): StageKey {
+  if (stageDef(wanted).group === 'source' && single.reply && !single.has(wanted)) return single.reached!;
+  return wanted;
 }
 
-/** Only the options that differ from the defaults travel to the worker. */
-function changedOptions(): Partial<Options> {
-  const options = currentOptions();
-  return Object.fromEntries(
-    (Object.keys(options) as Array<keyof Options>).filter((k) => options[k] !== defaultOptions[k]).map((k) => [k, options[k]]),
-  ) as Partial<Options>;
+function pillStates(): Map<StageKey, PillState> {
+  const states = new Map<StageKey, PillState>();
+  for (const { key, group } of STAGES) {
+    let state: PillState;
+    if (!viewer.surface) state = 'disabled';
+    else if (group === 'mesh') state = 'ready';
+    else if (!canCompute()) state = 'disabled';
+    else if (group === 'source') state = single.has(key) ? 'ready' : single.reply ? 'disabled' : 'pending';
+    else if (key === 'reconstruction') state = whole.evaluation ? 'ready' : whole.result ? 'pending' : whole.running ? 'disabled' : 'pending';
+    else state = whole.result ? 'ready' : whole.running ? (key === 'separators' ? 'running' : 'pending') : 'pending';
+    states.set(key, state);
+  }
+  return states;
 }
 
-async function runSeparator(source: number): Promise<void> {
+/** The user asks for a stage: it is shown, and computed when it is not yet. */
+function enter(key: StageKey): void {
+  wanted = key;
+  refresh();
+  if (!canCompute()) return;
+  const group = stageDef(key).group;
+  if (group === 'source' && !single.reply) void single.runRandom();
+  if (group === 'shape') {
+    // run() joins a run in progress.
+    const computed = whole.result ? Promise.resolve() : whole.run();
+    // Reconstruction needs the skeleton first, then its evaluation.
+    if (key === 'reconstruction') {
+      void computed.then(() => {
+        if (wanted === 'reconstruction') return whole.evaluate();
+      });
+    }
+  }
+}
+timeline.onSelect = enter;
+
+/** Redraws the stage shown: layer visibility, the surface's colouring, the panel, the timeline and the address. */
+function refresh(): void {
+  const key = shownStage();
+  const def = stageDef(key);
   const surface = viewer.surface;
-  if (!surface || opening > 0) return;
-  const generation = meshGeneration;
-  const request = ++latestSeparatorRequest;
-  if (separator?.separator.source !== source) {
-    const radius = surface.boundingSphere.radius * 0.022;
-    viewer.setLayer('source', new SpheresLayer('Source vertex', surface.vertexPosition(source).toArray(), radius));
-  }
-
-  computing++;
-  startAction('computing stage 1…');
-  updateState();
-  try {
-    const reply = await client.separator(source, changedOptions());
-    if (generation !== meshGeneration || request !== latestSeparatorRequest) return; // superseded
-    showSeparator(reply);
-  } catch (error) {
-    if (generation !== meshGeneration || request !== latestSeparatorRequest) return;
-    clearSeparator();
-    if (!(error instanceof WorkerError && error.kind === 'crash')) fail('Could not compute stage 1 (geodesic distance)', error);
-  } finally {
-    computing--;
-    updateState();
-  }
-}
-
-function showSeparator(reply: SeparatorReply): void {
-  const surface = viewer.surface!;
-  const s = reply.separator;
-  const spacing = niceSpacing(reply.distanceMax);
-  surface.setScalarField({ values: s.distance, max: reply.distanceMax, isolineSpacing: spacing });
-  for (const name of SEPARATOR_LAYERS) viewer.setLayer(name, null);
-  for (const { name, layer, color } of separatorLayers(s, surface)) {
-    layerColors.set(name, color);
-    viewer.setLayer(name, layer);
-  }
-  separator = reply;
-  stagePanel.setResult(reply, spacing);
-  document.body.dataset.separatorRuns = String(++separatorRuns);
-  showStage(wantedStage);
-}
-
-/** The options the shown stage-1 run used differ from the current ones (changed in the other mode). */
-function separatorStale(): boolean {
-  if (!separator) return false;
-  const now = currentOptions();
-  return separator.options.target !== now.target || separator.options.sphere !== now.sphere;
-}
-
-function clearSeparator(): void {
-  separator = null;
-  for (const name of [...SEPARATOR_LAYERS, 'source']) viewer.setLayer(name, null);
-  viewer.surface?.setScalarField(null);
-  viewer.surface?.setDimmed(false);
-  viewer.surface?.setRegion(null);
-  stagePanel.setResult(null);
-  delete document.body.dataset.stage;
-  viewer.requestRender();
-}
-
-/** Shows layers up to `wanted` (clamped to the stages the run reached), earlier ones dimmed. */
-function showStage(wanted: number): void {
-  if (!separator) return;
-  stage = Math.min(Math.max(1, wanted), stagePanel.reachedStage, STAGES.length);
-  if (mode !== 'single') {
-    // A reply that arrived after the switch to the whole-shape mode: shown when the user comes back.
-    stagePanel.setStage(stage, separator, new Set(viewer.listLayers().map(([name]) => name)));
-    whole.apply();
-    return;
-  }
   for (const [name, layer] of viewer.listLayers()) {
-    if (isSkeletonLayer(name)) {
-      layer.object.visible = false;
+    if (name === 'surface') {
+      layer.object.visible = !userHidden.has(name);
       continue;
     }
-    const introduced = LAYER_STAGE[name] ?? 1;
-    layer.object.visible = introduced <= stage && !userHidden.has(name);
-    // The source marker stays bright; the surface dims its colormap once lines are drawn on it.
-    layer.setDimmed?.(name !== 'source' && introduced < stage);
+    layer.object.visible = def.layers.includes(name) && !userHidden.has(name);
+    layer.setDimmed?.(!!def.dimmed?.includes(name));
   }
-  // The constraint region on the surface goes with the sphere layer.
-  const sphere = separator.separator.sphere;
-  const sphereShown = !!sphere && stage >= LAYER_STAGE.sphere && !userHidden.has('sphere');
-  viewer.surface?.setRegion(sphereShown ? sphere : null, stage > LAYER_STAGE.sphere ? 0.35 : 1);
-  stagePanel.setStage(stage, separator, new Set(viewer.listLayers().map(([name]) => name)));
-  updateLayerList();
+  if (surface) {
+    if (def.group === 'shape') whole.applySurface(key);
+    else if (def.group === 'source' && single.reply) single.applySurface(key, !!viewer.getLayer('sphere') && !userHidden.has('sphere'));
+    else {
+      surface.setScalarVisible(false);
+      surface.setDimmed(false);
+      surface.setRegion(null);
+      surface.setRegionColorMix(0);
+      surface.setTranslucent(false);
+    }
+  }
+
+  // The panel: the stage card, and the results of the stage's group.
+  document.body.dataset.stage = key;
+  byTestId('stage-index').textContent = String(stageIndex(key) + 1);
+  byTestId('stage-title').textContent = def.title;
+  byTestId('stage-section').textContent = def.section;
+  let caption = def.caption;
+  if (def.group === 'source' && single.reply) caption += separatorCaption(key, single.reply);
+  if (def.group === 'shape' && whole.result) caption += SkeletonPanel.caption(key, whole.result);
+  byTestId('stage-caption').textContent = caption;
+  const present = new Set(viewer.listLayers().map(([name]) => name));
+  byTestId('stage-legend').replaceChildren(
+    ...def.legend.filter(({ layer }) => present.has(layer)).map(({ label, color }) => swatch(color, label)),
+    ...whole.legendExtras(key),
+  );
+  const reached = single.reached;
+  byTestId('stage-card').classList.toggle('failed', def.group === 'source' && key === reached && single.reply?.separator.status !== 'ok');
+  for (const section of document.querySelectorAll<HTMLElement>('[data-group]')) {
+    section.hidden = section.dataset.group !== (def.group === 'mesh' ? 'source' : def.group);
+  }
+  byTestId('sk-recon-result').hidden = key !== 'reconstruction' || !whole.evaluation;
+  viewportHint.textContent = `${def.click} · ←/→ step through the stages · drag to orbit · right-drag to pan · scroll to zoom`;
+
+  timeline.show(key, pillStates());
+  updateTimes();
+  updateLayerList(def.layers, def.dimmed ?? []);
+  updateDownloads();
+  writeUrl({ mesh: mesh?.sample ?? null, stage: key, source: single.source, options: params.options });
   viewer.requestRender();
 }
 
-stagePanel.onSelect = (wanted) => {
-  if (!separator) return;
-  showStage(wanted);
-  wantedStage = stage;
-};
-viewer.onPick = (pick: Pick) => {
-  if (mode === 'single') void runSeparator(pick.vertex);
-};
-
-function rerun(): void {
-  if (separator && mode === 'single') void runSeparator(separator.separator.source);
-}
-targetSelect.addEventListener('change', rerun);
-sphereBox.addEventListener('change', rerun);
-targetSelect.value = defaultOptions.target;
-sphereBox.checked = defaultOptions.sphere;
-
-/** The layer list shows the layers of the stages up to the one shown. */
-function updateLayerList(): void {
-  if (mode === 'whole') {
-    panel.setLayers(whole.layerEntries(), (name, visible) => {
-      if (visible) userHidden.delete(name);
-      else userHidden.add(name);
-      if (name === 'surface') viewer.setLayerVisible(name, visible);
-      else whole.apply();
-    });
-    return;
+/** The time each stage's computation took, under its pill. */
+function updateTimes(): void {
+  const times: Partial<Record<StageKey, number>> = {
+    mesh: mesh?.openMs,
+    ...(single.reply ? separatorStageTimes(single.reply) : {}),
+    ...(whole.result ? SkeletonPanel.stageTimes(whole.result) : {}),
+    reconstruction: whole.evaluation?.timings.evaluateMs,
+  };
+  for (const { key } of STAGES) {
+    const ms = times[key];
+    timeline.setTime(key, ms !== undefined && Number.isFinite(ms) ? formatMs(ms) : '');
+    timeline.setProgress(key, key === 'separators' ? whole.progress : null);
   }
-  const shown = viewer
-    .listLayers()
-    .filter(([name]) => !isSkeletonLayer(name) && (!separator || (LAYER_STAGE[name] ?? 1) <= stage));
-  panel.setLayers(
-    shown.map(([name, layer]) => ({
+}
+
+/** The layer list: the surface and the layers of the stage shown that have data. */
+let layerListKey = '';
+function updateLayerList(names: string[], dimmed: string[]): void {
+  const entries = ['surface', ...names]
+    .map((name) => [name, viewer.getLayer(name)] as const)
+    .filter(([, layer]) => layer)
+    .map(([name, layer]) => ({
       name,
-      label: layer.label,
+      label: layer!.label,
       visible: !userHidden.has(name),
       color: layerColors.get(name),
-      dimmed: !!separator && name !== 'source' && (LAYER_STAGE[name] ?? 1) < stage,
-    })),
-    (name, visible) => {
-      if (visible) userHidden.delete(name);
-      else userHidden.add(name);
-      if (separator) showStage(stage);
-      else viewer.setLayerVisible(name, visible);
-    },
-  );
+      dimmed: dimmed.includes(name),
+    }));
+  const key = JSON.stringify(entries);
+  if (key === layerListKey) return; // rebuilt only when it changes (progress refreshes often)
+  layerListKey = key;
+  panel.setLayers(entries, (name, visible) => {
+    if (visible) userHidden.delete(name);
+    else userHidden.add(name);
+    refresh();
+  });
 }
 
-// -- whole shape ----------------------------------------------------------------------------------
+// -- clicks -----------------------------------------------------------------------------------------
 
-const whole = new WholeShape(
-  {
-    viewer,
-    client,
-    userHidden,
-    layerColors,
-    baseOptions: currentOptions,
-    begin: (status) => {
-      computing++;
-      startAction(status);
-      updateState();
-    },
-    end: () => {
-      computing--;
-      updateState();
-    },
-    fail,
-    setStatus: (text) => panel.setStatus(text, true),
-    updateLayerList,
-  },
-  new SkeletonPanel(defaultOptions),
-);
-
-const HINTS: Record<Mode, { viewport: string; options: string }> = {
-  single: {
-    viewport: 'Click the surface to run stage 1 from that vertex · ←/→ step through stages · drag to orbit · right-drag to pan · scroll to zoom',
-    options: 'Changes re-run stage 1 for the current source.',
-  },
-  whole: {
-    viewport: 'Compute the skeleton in the panel · ←/→ step through the views · drag to orbit · right-drag to pan · scroll to zoom',
-    options: 'Used by the next skeleton run (with N and the seed above).',
-  },
-};
-
-function setMode(next: Mode): void {
-  if (next === mode) return;
-  mode = next;
-  document.body.dataset.mode = mode;
-  for (const tab of document.querySelectorAll<HTMLButtonElement>('.mode-tab')) {
-    const selected = tab.dataset.mode === mode;
-    tab.classList.toggle('selected', selected);
-    tab.setAttribute('aria-selected', String(selected));
-  }
-  for (const section of document.querySelectorAll<HTMLElement>('[data-mode-section]')) section.hidden = section.dataset.modeSection !== mode;
-  viewportHint.textContent = HINTS[mode].viewport;
-  optionsHint.textContent = HINTS[mode].options;
-  stagePanel.enabled = mode === 'single';
-  if (mode === 'whole') {
-    whole.activate();
+viewer.onClick = (x, y) => {
+  const key = shownStage();
+  if (stageDef(key).group === 'shape') {
+    if (!whole.result || (key !== 'regions' && key !== 'skeleton')) return;
+    const node = key === 'skeleton' ? viewer.pickInstance('sk-nodes', x, y) : null;
+    if (node !== null) return whole.select(node);
+    const pick = viewer.pick(x, y);
+    if (pick) whole.selectVertex(pick.vertex);
+    else whole.select(null);
     return;
   }
-  whole.deactivate();
-  viewer.surface?.setScalarVisible(true);
-  if (separatorStale()) rerun();
-  if (separator) showStage(stage);
-  else {
-    for (const [name, layer] of viewer.listLayers()) if (isSkeletonLayer(name)) layer.object.visible = false;
-    updateLayerList();
-  }
+  const pick = viewer.pick(x, y);
+  if (!pick) return;
+  if (key === 'mesh') wanted = 'geodesics';
+  void single.run(pick.vertex);
+};
+
+byTestId('random-source').addEventListener('click', () => {
+  if (stageDef(shownStage()).group !== 'source') wanted = 'geodesics';
+  void single.runRandom();
+});
+
+// -- parameters: re-run only what depends on the change --------------------------------------------
+
+params.onChange = (keys) => {
+  if (keys.some((k) => STAGE1_OPTIONS.includes(k)) && single.reply) void single.rerun();
+  // Every option shapes the whole-shape result: drop it, and compute it again if it is on screen.
+  const had = whole.result !== null || whole.running;
+  whole.invalidate();
+  if (had && stageDef(shownStage()).group === 'shape') enter(shownStage());
+  refresh();
+};
+
+// -- downloads ------------------------------------------------------------------------------------
+
+const skeletonButtons = [...document.querySelectorAll<HTMLButtonElement>('.downloads [data-what]')];
+function updateDownloads(): void {
+  for (const button of skeletonButtons) button.disabled = !whole.result;
+  byTestId<HTMLButtonElement>('dl-png').disabled = !viewer.surface;
+}
+for (const button of skeletonButtons) {
+  button.addEventListener('click', async () => {
+    if (!mesh || !whole.result) return;
+    const what = button.dataset.what as WriteRequest['what'];
+    try {
+      const reply = await client.write(what, mesh.fileName);
+      const [name, type] =
+        what === 'separators-obj' ? [`${baseName(mesh.fileName)}-separators.obj`, 'text/plain'] : [`${baseName(mesh.fileName)}-skeleton.${what}`, what === 'json' ? 'application/json' : 'text/plain'];
+      saveFile(name, reply.bytes as Uint8Array<ArrayBuffer>, type);
+    } catch (error) {
+      fail('Could not save the file', error);
+      updateState();
+    }
+  });
+}
+byTestId('dl-png').addEventListener('click', async () => {
+  if (!mesh) return;
   viewer.requestRender();
-}
+  viewer.flush();
+  saveFile(`${baseName(mesh.fileName)}-${shownStage()}.png`, await canvasPng(viewer.renderer.domElement), 'image/png');
+});
 
-for (const tab of document.querySelectorAll<HTMLButtonElement>('.mode-tab')) {
-  tab.addEventListener('click', () => setMode(tab.dataset.mode as Mode));
-}
-document.body.dataset.mode = mode;
-
-// -- panel controls ------------------------------------------------------------------------------
+// -- view controls and files ----------------------------------------------------------------------
 
 flatBox.addEventListener('change', () => {
   viewer.surface?.setFlatShading(flatBox.checked);
@@ -397,7 +396,7 @@ isolinesBox.addEventListener('change', () => {
   viewer.requestRender();
 });
 document.querySelector('#reset-view')!.addEventListener('click', () => viewer.frame());
-viewer.onLayersChange = updateLayerList;
+viewer.onLayersChange = () => updateLayerList(stageDef(shownStage()).layers, stageDef(shownStage()).dimmed ?? []);
 
 document.querySelector('#formats-hint')!.textContent = `or drop ${MESH_EXTENSIONS.join(' ')} anywhere`;
 installFileSources({
@@ -407,6 +406,7 @@ installFileSources({
   extensions: MESH_EXTENSIONS,
   onFile: (file) => void openFile(file),
 });
+installGallery(gallery, (sample) => void openSample(sample));
 
 /** For end-to-end tests and the console. */
 declare global {
@@ -414,6 +414,8 @@ declare global {
     cscd?: {
       simulateCrash(how?: 'abort' | 'uncaught' | 'hang'): Promise<void>;
       projectVertex(index: number): { x: number; y: number } | null;
+      /** Window position of a skeleton node's centre (null: no skeleton). */
+      projectNode(index: number): { x: number; y: number } | null;
       /** Camera along `direction` (towards the camera) at a sphere around `center` (default: the mesh). */
       setView(view: { direction?: [number, number, number]; center?: [number, number, number]; radius?: number }): void;
     };
@@ -422,6 +424,10 @@ declare global {
 window.cscd = {
   simulateCrash: (how) => client.simulateCrash(how).catch(() => undefined),
   projectVertex: (index) => viewer.projectVertex(index),
+  projectNode: (index) => {
+    const nodes = whole.result?.skeleton.nodes;
+    return nodes && 3 * index + 2 < nodes.length ? viewer.projectPoint(nodes.subarray(3 * index, 3 * index + 3)) : null;
+  },
   setView: ({ direction, center, radius }) => {
     const v = (a?: [number, number, number]) => (a ? { x: a[0], y: a[1], z: a[2] } : undefined);
     viewer.frame({ direction: v(direction), center: v(center), radius });
@@ -429,4 +435,16 @@ window.cscd = {
   },
 };
 
-void openSample();
+// -- start: the linked view, or the default sample --------------------------------------------------
+
+void (async () => {
+  refresh();
+  const sample = sampleByName(initial.mesh) ?? DEFAULT_SAMPLE;
+  if (!(await openSample(sample))) return;
+  const surface = viewer.surface;
+  if (initial.source !== null && surface && initial.source < surface.vertexCount && canCompute()) {
+    wanted = initial.stage && SOURCE_STAGES.includes(initial.stage) ? initial.stage : 'geodesics';
+    await single.run(initial.source);
+  }
+  if (initial.stage) enter(initial.stage);
+})();

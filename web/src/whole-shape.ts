@@ -1,129 +1,92 @@
 /**
- * The whole-shape mode: runs the CSCD-M pipeline in the worker with progress and cancel, draws the
- * candidate loops as they arrive, then shows the result view by view (Candidates, Packing, Regions,
- * Skeleton). Its viewer layers are named `sk-*`; the surface is shared with the single-source mode.
- *
- * The reconstruction toggle adds the skeleton's convolution surface (`sk-recon`) over the input and
- * colours the input by each vertex's reconstruction error, in whichever view is shown.
+ * The whole-shape half of the timeline: runs the CSCD-M pipeline in the worker with progress and
+ * cancel, draws the candidate loops as they arrive, builds the result's layers (`sk-*`: candidates by
+ * fate, packed loops, skeleton nodes and edges), the per-vertex region colours, the reconstruction
+ * error (evaluated once, when its stage is first entered) and the selection of a node and its region.
  *
  * For tests: `document.body.dataset.skRun` is running | done | cancelled | failed,
- * `dataset.skeletonRuns` counts the results shown, `dataset.skStage` is the view shown and
- * `dataset.skRecon` the mean reconstruction error shown.
+ * `dataset.skeletonRuns` counts the results shown, `dataset.skRecon` is the mean reconstruction error
+ * shown and `dataset.skSelected` the selected node.
  */
-import { defaultOptions } from '../../lib/core/options.ts';
-import type { Options } from '../../lib/core/types.ts';
-import { SK_COLORS, SK_REGIONS_STAGE, SK_SKELETON_STAGE, SK_STAGES, SkeletonPanel } from './ui/skeleton-panel.ts';
+import * as THREE from 'three';
+import type { StudioContext } from './single-source.ts';
+import { changedOptions } from './single-source.ts';
+import { COLORS, type StageKey } from './stage-defs.ts';
+import { byTestId, formatLength } from './ui/panel.ts';
+import { SkeletonPanel } from './ui/skeleton-panel.ts';
+import { TRANSLUCENT_COLOR } from './viewer/layers.ts';
 import {
   LoopSet,
   ReconstructionLayer,
   candidateRadius,
   errorVertexColors,
+  nodeRadii,
   regionColor,
   regionVertexColors,
   skeletonLayers,
 } from './viewer/skeleton-layers.ts';
-import type { Viewer } from './viewer/viewer.ts';
-import { WorkerError, type GeometryClient, type SkeletonJob } from './worker/client.ts';
+import { GlassSphereLayer } from './viewer/tubes.ts';
+import { WorkerError, type SkeletonJob } from './worker/client.ts';
 import type { EvaluationReply, PipelineNews, SkeletonReply } from './worker/protocol.ts';
-
-export interface WholeShapeContext {
-  viewer: Viewer;
-  client: GeometryClient;
-  /** Layers the user switched off in the layer list (shared with the other mode). */
-  userHidden: Set<string>;
-  layerColors: Map<string, string>;
-  /** The options shared with stage 1 (target, sphere constraint). */
-  baseOptions(): Options;
-  /** A computation starts / ends (page state, busy status). */
-  begin(status: string): void;
-  end(): void;
-  /** Shows an error box. */
-  fail(title: string, error: unknown): void;
-  setStatus(text: string): void;
-  updateLayerList(): void;
-}
 
 /** Least time between two redraws of the candidate loops while they arrive. */
 const PROGRESS_REDRAW_MS = 400;
 
 export const isSkeletonLayer = (name: string) => name.startsWith('sk-');
 
-export interface LayerEntry {
-  name: string;
-  label: string;
-  visible: boolean;
-  color?: string;
-  dimmed?: boolean;
-}
-
 export class WholeShape {
-  /** The mode is shown (its layers and surface colours apply). */
-  private active = false;
+  result: SkeletonReply | null = null;
+  /** The evaluation of the result (null until the reconstruction stage first asks for it). */
+  evaluation: EvaluationReply | null = null;
+  /** The selected skeleton node, or null. */
+  selected: number | null = null;
+  /** Fraction of the sources done while running (null otherwise). */
+  progress: number | null = null;
+
+  readonly panel = new SkeletonPanel();
   private job: SkeletonJob | null = null;
+  private running_: Promise<void> | null = null;
   private jobId = 0;
   private cancelRequested = false;
   /** The running job chooses N itself (the total may shrink). */
   private auto = false;
-  private result: SkeletonReply | null = null;
   private progressLoops: LoopSet | null = null;
   private lastNews: PipelineNews | null = null;
-  private stage = 1;
-  /** The view the user stepped to; the next result shows it again. */
-  private wantedStage = 1;
   private regionColors: string[] = [];
   private vertexColors: Float32Array | null = null;
-  /** The evaluation of the result shown (null until the toggle first asks for it) and its colours. */
-  private evaluation: EvaluationReply | null = null;
+  /** The region colours with the selected region picked out: over the opaque and the see-through surface. */
+  private selectedColors: { opaque: Float32Array; clear: Float32Array } | null = null;
   private errorColors: Float32Array | null = null;
-  private evaluating = false;
+  private evaluating: Promise<void> | null = null;
   private runs = 0;
   private redrawTimer: number | null = null;
   private lastRedraw = -Infinity;
   /** Measured cost of the last redraw of the candidate loops (ms). */
   private frameCost = 0;
 
-  constructor(
-    private readonly ctx: WholeShapeContext,
-    private readonly panel: SkeletonPanel,
-  ) {
-    panel.onCompute = () => void this.run();
-    panel.onCancel = () => this.cancel();
-    panel.onRecon = () => void this.toggleRecon();
-    panel.onSelect = (stage) => {
-      if (!this.result) return;
-      this.showStage(stage);
-      this.wantedStage = this.stage;
-    };
+  constructor(private readonly ctx: StudioContext) {
+    this.panel.onCompute = () => void this.run();
+    this.panel.onCancel = () => this.cancel();
   }
 
   get running(): boolean {
     return this.job !== null;
   }
 
-  // -- mode ---------------------------------------------------------------------------------------
-
-  activate(): void {
-    this.active = true;
-    this.panel.active = true;
-    this.apply();
-  }
-
-  /** Hides this mode's layers and surface colouring (the other mode takes over). */
-  deactivate(): void {
-    this.active = false;
-    this.panel.active = false;
-    const surface = this.ctx.viewer.surface;
-    surface?.setRegionColorMix(0);
-    surface?.setTranslucent(false);
-    for (const [name, layer] of this.ctx.viewer.listLayers()) if (isSkeletonLayer(name)) layer.object.visible = false;
-    this.ctx.viewer.requestRender();
-  }
-
   /** A new mesh is shown: stop any run and forget the result (the viewer's layers are already gone). */
   reset(): void {
+    this.invalidate();
+    this.panel.setStatus(null);
+    delete document.body.dataset.skRun;
+  }
+
+  /** The options changed: stop any run and drop the result, its layers and evaluation. */
+  invalidate(): void {
     this.cancelRedraw();
     this.job?.cancel();
     this.job = null;
+    this.running_ = null;
+    this.progress = null;
     this.jobId++;
     this.result = null;
     this.progressLoops = null;
@@ -131,82 +94,41 @@ export class WholeShape {
     this.vertexColors = null;
     this.regionColors = [];
     this.forgetEvaluation();
+    this.select(null);
+    for (const [name] of this.ctx.viewer.listLayers()) if (isSkeletonLayer(name)) this.ctx.viewer.setLayer(name, null);
     this.panel.endRun(false);
-    this.panel.setStatus(null);
     this.panel.setResult(null);
-    delete document.body.dataset.skRun;
-    delete document.body.dataset.skStage;
-    if (this.active) this.apply();
-  }
-
-  /** Makes the viewer show this mode: other layers hidden, the surface plain or per the view. */
-  apply(): void {
-    if (!this.active) return;
-    const surface = this.ctx.viewer.surface;
-    surface?.setScalarVisible(false);
-    surface?.setRegion(null);
-    surface?.setDimmed(false);
-    if (this.result) {
-      this.showStage(this.stage);
-      return;
-    }
-    surface?.setRegionColorMix(0);
-    surface?.setTranslucent(false);
-    for (const [name, layer] of this.ctx.viewer.listLayers()) {
-      if (name === 'surface') continue;
-      layer.object.visible = name === 'sk-progress' && !this.ctx.userHidden.has(name);
-      layer.setDimmed?.(false);
-    }
-    this.ctx.updateLayerList();
-    this.ctx.viewer.requestRender();
-  }
-
-  /** The layer list's entries for this mode (the layers of the view shown). */
-  layerEntries(): LayerEntry[] {
-    const def = this.result ? SK_STAGES[this.stage - 1] : null;
-    return this.ctx.viewer
-      .listLayers()
-      .filter(([name]) => (def ? this.viewLayers(def.layers).includes(name) : name === 'sk-progress') || name === 'surface')
-      .map(([name, layer]) => ({
-        name,
-        label: layer.label,
-        visible: !this.ctx.userHidden.has(name),
-        color: this.ctx.layerColors.get(name),
-        dimmed: !!def?.dimmed?.includes(name),
-      }));
   }
 
   // -- running --------------------------------------------------------------------------------------
 
-  async run(): Promise<void> {
+  /** Starts a run with the current options (or returns the one running); resolves when it ends. */
+  run(): Promise<void> {
+    if (!this.running_) this.running_ = this.runJob().finally(() => (this.running_ = null));
+    return this.running_;
+  }
+
+  private async runJob(): Promise<void> {
     const { viewer, client } = this.ctx;
     const surface = viewer.surface;
-    if (!surface || this.job) return;
-    const options: Options = { ...this.ctx.baseOptions(), ...this.panel.readOptions(defaultOptions) };
-    const changed = Object.fromEntries(
-      (Object.keys(options) as Array<keyof Options>).filter((k) => options[k] !== defaultOptions[k]).map((k) => [k, options[k]]),
-    ) as Partial<Options>;
-
-    // Forget the previous result; candidate loops are drawn as they come.
-    this.result = null;
-    this.forgetEvaluation();
-    this.lastNews = null;
-    for (const [name] of viewer.listLayers()) if (isSkeletonLayer(name)) viewer.setLayer(name, null);
+    if (!surface) return;
+    const options = this.ctx.options();
+    this.invalidate();
     this.progressLoops = new LoopSet(surface, 0.6 * candidateRadius(surface));
-    this.ctx.layerColors.set('sk-progress', SK_COLORS.candidate);
+    this.ctx.layerColors.set('sk-progress', COLORS.candidate);
     this.cancelRequested = false;
     this.auto = options.n === 'auto';
+    this.progress = 0;
     this.panel.startRun(options.n);
     document.body.dataset.skRun = 'running';
-    delete document.body.dataset.skStage;
-    this.apply();
 
     const id = ++this.jobId;
     this.ctx.begin('stage 1: starting…');
-    const job = client.skeleton(changed, (news) => {
+    const job = client.skeleton(changedOptions(options), (news) => {
       if (id === this.jobId) this.receive(news);
     });
     this.job = job;
+    this.ctx.changed();
     let keepProgress = false;
     try {
       const reply = await job.result;
@@ -240,8 +162,10 @@ export class WholeShape {
     } finally {
       if (id === this.jobId) {
         this.job = null;
+        this.progress = null;
         this.panel.endRun(keepProgress);
         if (!this.result) this.panel.setResult(null);
+        this.ctx.changed();
       }
       this.ctx.end();
     }
@@ -251,15 +175,16 @@ export class WholeShape {
     if (!this.job || this.cancelRequested) return;
     this.cancelRequested = true;
     this.panel.cancelling();
-    this.ctx.setStatus('cancelling…');
     this.job.cancel();
   }
 
   private receive(news: PipelineNews): void {
     this.lastNews = news;
+    this.progress = news.total > 0 ? news.done / news.total : 0;
     this.panel.setProgress(news.done, news.total, this.auto ? 'stage 1 · auto: ends when loops stop adding coverage' : 'stage 1');
     if (news.finished) this.panel.setStage2();
     if (this.cancelRequested) this.panel.cancelling();
+    this.ctx.progressed();
     if (!this.progressLoops) return;
     const before = this.progressLoops.count;
     for (const loop of news.newLoops) this.progressLoops.add(loop);
@@ -278,9 +203,9 @@ export class WholeShape {
     this.lastRedraw = performance.now();
     const surface = this.ctx.viewer.surface;
     if (!surface || !this.progressLoops) return;
-    const layer = this.progressLoops.layer(`Candidate loops (${this.progressLoops.count})`, SK_COLORS.candidate, candidateRadius(surface));
-    layer.object.visible = this.active && !this.ctx.userHidden.has('sk-progress');
+    const layer = this.progressLoops.layer(`Candidate loops (${this.progressLoops.count})`, COLORS.candidate, candidateRadius(surface));
     this.ctx.viewer.setLayer('sk-progress', layer);
+    this.ctx.changed();
     // The time to the frame after the next one: how long the page is held up by drawing the loops.
     const t = performance.now();
     requestAnimationFrame(() => requestAnimationFrame(() => (this.frameCost = performance.now() - t)));
@@ -302,7 +227,6 @@ export class WholeShape {
     this.progressLoops = null;
     for (const { name, layer, color } of skeletonLayers(s, surface)) {
       this.ctx.layerColors.set(name, color);
-      layer.object.visible = false;
       viewer.setLayer(name, layer);
     }
     const nodeCount = Math.floor(s.nodes.length / 3);
@@ -311,7 +235,6 @@ export class WholeShape {
     for (const node of s.vertexToNode) if (node < nodeCount) owned.add(node);
     this.regionColors = [...owned].sort((a, b) => a - b).map(regionColor);
     this.vertexColors = regionVertexColors(s.vertexToNode, nodeCount, surface.vertexCount);
-    surface.setRegionColors(this.vertexColors, 0);
     this.result = reply;
     this.panel.setResult(reply, owned.size);
     this.panel.setStatus({
@@ -321,81 +244,141 @@ export class WholeShape {
     });
     document.body.dataset.skRun = 'done';
     document.body.dataset.skeletonRuns = String(++this.runs);
-    this.showStage(this.wantedStage);
   }
 
-  private showStage(wanted: number): void {
-    if (!this.result) return;
-    this.stage = Math.min(Math.max(1, wanted), SK_STAGES.length);
-    if (!this.active) return;
-    const def = SK_STAGES[this.stage - 1];
-    const { viewer, userHidden } = this.ctx;
-    const shown = this.viewLayers(def.layers);
-    for (const [name, layer] of viewer.listLayers()) {
-      if (name === 'surface') continue;
-      layer.object.visible = shown.includes(name) && !userHidden.has(name);
-      layer.setDimmed?.(!!def.dimmed?.includes(name));
-    }
-    const surface = viewer.surface;
-    if (this.errorColors && this.panel.reconShown) {
-      // The error colours replace the view's colouring; the shell over an opaque surface shows where
-      // the reconstruction bulges out, the colours where it falls short.
-      surface?.setRegionColors(this.errorColors, 1);
-      surface?.setTranslucent(false);
+  /** The surface for a whole-shape stage: plain, in region colours, see-through or in error colours. */
+  applySurface(key: StageKey): void {
+    const surface = this.ctx.viewer.surface;
+    if (!surface) return;
+    surface.setScalarVisible(false);
+    surface.setRegion(null);
+    surface.setDimmed(false);
+    const selected = this.selectedColors;
+    if (key === 'reconstruction' && this.errorColors) {
+      // The error colours on the opaque surface; the shell over it shows where the reconstruction
+      // bulges out, the colours where it falls short.
+      surface.setRegionColors(this.errorColors, 1);
+    } else if (key === 'regions' && this.vertexColors) {
+      surface.setRegionColors(selected?.opaque ?? this.vertexColors, 1);
+    } else if (key === 'skeleton' && selected) {
+      surface.setRegionColors(selected.clear, 1);
     } else {
-      if (this.vertexColors) surface?.setRegionColors(this.vertexColors, 0);
-      surface?.setRegionColorMix(this.stage === SK_REGIONS_STAGE ? 1 : 0);
-      surface?.setTranslucent(this.stage === SK_SKELETON_STAGE);
+      surface.setRegionColorMix(0);
     }
-    const present = new Set(viewer.listLayers().map(([name]) => name));
-    this.panel.setStage(this.stage, this.result, present, this.regionColors);
-    this.ctx.updateLayerList();
-    viewer.requestRender();
+    surface.setTranslucent(key === 'skeleton');
+  }
+
+  /** Legend entries a stage adds: one chip per region in the Regions stage. */
+  legendExtras(key: StageKey): HTMLLIElement[] {
+    if (key !== 'regions' || !this.result) return [];
+    const li = document.createElement('li');
+    li.className = 'region-chips';
+    li.append(`${this.regionColors.length} region${this.regionColors.length === 1 ? '' : 's'}`);
+    for (const [i, color] of this.regionColors.entries()) {
+      const chip = document.createElement('span');
+      chip.className = 'swatch';
+      chip.style.background = color;
+      chip.title = `region ${i + 1}`;
+      li.append(chip);
+    }
+    return [li];
+  }
+
+  // -- selection ------------------------------------------------------------------------------------
+
+  /** Selects the node whose region holds `vertex`. */
+  selectVertex(vertex: number): void {
+    const s = this.result?.skeleton;
+    if (!s) return;
+    const node = vertex < s.vertexToNode.length ? s.vertexToNode[vertex] : -1;
+    this.select(node >= 0 && node < s.nodes.length / 3 ? node : null);
+  }
+
+  /** Selects a skeleton node (null: none): a halo around it and its region picked out on the surface. */
+  select(node: number | null): void {
+    const { viewer } = this.ctx;
+    const s = this.result?.skeleton;
+    const surface = viewer.surface;
+    this.selected = s && surface ? node : null;
+    this.selectedColors = null;
+    viewer.setLayer('sk-highlight', null);
+    const info = byTestId('sk-selection');
+    if (this.selected === null || !s || !surface || !this.vertexColors) {
+      info.hidden = true;
+      delete document.body.dataset.skSelected;
+      this.ctx.changed();
+      return;
+    }
+    const n = this.selected;
+    const grey = new THREE.Color(0x8a8780).toArray();
+    const clear = new THREE.Color(TRANSLUCENT_COLOR).toArray();
+    const opaque = Float32Array.from(this.vertexColors);
+    const see = new Float32Array(opaque.length);
+    let owned = 0;
+    for (let v = 0; v < surface.vertexCount; v++) {
+      const mine = s.vertexToNode[v] === n;
+      if (mine) owned++;
+      for (let k = 0; k < 3; k++) {
+        const c = opaque[3 * v + k];
+        if (!mine) opaque[3 * v + k] = c * 0.3 + grey[k] * 0.7;
+        see[3 * v + k] = mine ? c : clear[k];
+      }
+    }
+    this.selectedColors = { opaque, clear: see };
+    const r = nodeRadii(s, surface.boundingSphere.radius)[n] * 1.9;
+    this.ctx.layerColors.set('sk-highlight', COLORS.highlight);
+    viewer.setLayer('sk-highlight', new GlassSphereLayer('Selected node', s.nodes.subarray(3 * n, 3 * n + 3), r, COLORS.highlight));
+    const radius = s.radii[n];
+    const chip = document.createElement('span');
+    chip.className = 'swatch';
+    chip.style.background = owned > 0 ? regionColor(n) : COLORS.node;
+    const what = owned > 0 ? `its region: ${owned} vertices` : 'a branch node (no region of its own)';
+    info.replaceChildren(chip, `Node ${n} · radius ${Number.isFinite(radius) ? formatLength(radius) : '–'} · ${what}`);
+    info.hidden = false;
+    document.body.dataset.skSelected = String(n);
+    this.ctx.changed();
   }
 
   // -- reconstruction error ------------------------------------------------------------------------
 
-  /** A view's layers, plus the reconstructed surface while the toggle is on. */
-  private viewLayers(layers: string[]): string[] {
-    return this.errorColors && this.panel.reconShown ? [...layers, 'sk-recon'] : layers;
-  }
-
   private forgetEvaluation(): void {
     this.evaluation = null;
     this.errorColors = null;
+    this.evaluating = null;
     this.ctx.viewer.setLayer('sk-recon', null);
     this.panel.setRecon({ kind: 'off' });
     delete document.body.dataset.skRecon;
   }
 
-  /** The toggle changed: evaluate the result once (in the worker), then show or hide it. */
-  private async toggleRecon(): Promise<void> {
+  /** Evaluates the result once (in the worker); resolves when the figures are shown (or it failed). */
+  evaluate(): Promise<void> {
+    if (!this.result || this.evaluation) return Promise.resolve();
+    this.evaluating ??= this.evaluateJob().finally(() => (this.evaluating = null));
+    return this.evaluating;
+  }
+
+  private async evaluateJob(): Promise<void> {
     const result = this.result;
-    if (this.panel.reconShown && result && !this.evaluation && !this.evaluating) {
-      this.evaluating = true;
-      this.panel.setRecon({ kind: 'busy' });
-      this.ctx.begin('reconstructing the surface from the skeleton…');
-      try {
-        const reply = await this.ctx.client.evaluate();
-        if (result !== this.result) return; // a new run replaced the skeleton meanwhile
-        this.evaluation = reply;
-        const e = reply.evaluation;
-        // The top of the colour bar at the 95th percentile: the worst vertices saturate, the rest spread.
-        this.errorColors = errorVertexColors(e.vertexError, e.p95);
-        this.ctx.layerColors.set('sk-recon', SK_COLORS.reconstruction);
-        this.ctx.viewer.setLayer('sk-recon', new ReconstructionLayer('Reconstructed surface', e.surface.positions, e.surface.triangles));
-      } catch (error) {
-        if (result === this.result) {
-          const message = error instanceof Error ? error.message : String(error);
-          this.panel.setRecon({ kind: 'failed', message: `The reconstruction failed: ${message}` });
-        }
-        return;
-      } finally {
-        this.evaluating = false;
-        this.ctx.end();
+    this.panel.setRecon({ kind: 'busy' });
+    this.ctx.begin('reconstructing the surface from the skeleton…');
+    try {
+      const reply = await this.ctx.client.evaluate();
+      if (result !== this.result) return; // a new run replaced the skeleton meanwhile
+      this.evaluation = reply;
+      const e = reply.evaluation;
+      // The top of the colour bar at the 95th percentile: the worst vertices saturate, the rest spread.
+      this.errorColors = errorVertexColors(e.vertexError, e.p95);
+      this.ctx.layerColors.set('sk-recon', COLORS.reconstruction);
+      this.ctx.viewer.setLayer('sk-recon', new ReconstructionLayer('Reconstructed surface', e.surface.positions, e.surface.triangles));
+      this.panel.setRecon({ kind: 'done', reply, max: e.p95 });
+    } catch (error) {
+      if (result === this.result) {
+        const message = error instanceof Error ? error.message : String(error);
+        this.panel.setRecon({ kind: 'failed', message: `The reconstruction failed: ${message}` });
       }
+    } finally {
+      this.ctx.end();
+      this.ctx.changed();
     }
-    if (this.evaluation) this.panel.setRecon({ kind: 'done', reply: this.evaluation, max: this.evaluation.evaluation.p95 });
-    this.showStage(this.stage);
   }
 }

@@ -34,6 +34,18 @@ export function formatLength(x: number): string {
   return a >= 1e-3 && a < 1e6 ? String(Number(x.toPrecision(4))) : x.toExponential(3);
 }
 
+/** Rows (dt, dd pairs) of a `{step: milliseconds}` record; each dd has test id `${prefix}${step}`. */
+export function timingRows(timings: Record<string, number>, prefix: string): HTMLElement[] {
+  return Object.entries(timings).flatMap(([key, ms]) => {
+    const dt = document.createElement('dt');
+    dt.textContent = humanize(key);
+    const dd = document.createElement('dd');
+    dd.dataset.testid = `${prefix}${key}`;
+    dd.textContent = Number.isFinite(ms) ? formatMs(ms) : '–';
+    return [dt, dd];
+  });
+}
+
 export function formatMs(ms: number): string {
   return ms < 10 ? `${ms.toFixed(1)} ms` : ms < 10_000 ? `${Math.round(ms)} ms` : `${(ms / 1000).toFixed(1)} s`;
 }

@@ -1,7 +1,7 @@
 /** The viewer layers of one stage-1 run: cut locus, target, paths, loops, constraint sphere. */
 import * as THREE from 'three';
 import type { SeparatorData } from '../worker/protocol.ts';
-import { COLORS } from '../ui/stages.ts';
+import { COLORS } from '../stage-defs.ts';
 import { SpheresLayer, type Layer, type SurfaceLayer } from './layers.ts';
 import { GlassSphereLayer, TubesLayer, graphSegments, liftOffSurface, polylineSegments } from './tubes.ts';
 

@@ -4,7 +4,7 @@
  */
 import * as THREE from 'three';
 import type { SkeletonData } from '../worker/protocol.ts';
-import { SK_COLORS } from '../ui/skeleton-panel.ts';
+import { COLORS } from '../stage-defs.ts';
 import { turbo } from './colormap.ts';
 import { DIM_GREY, DIM_MIX, SpheresLayer, type Layer, type SurfaceLayer } from './layers.ts';
 import { TubesLayer, graphSegments, liftOffSurface, polylineSegments } from './tubes.ts';
@@ -101,10 +101,10 @@ export function skeletonLayers(s: SkeletonData, surface: SurfaceLayer): NamedLay
   const packed = new LoopSet(surface, RADIUS.packed * R * 0.6);
   s.candidates.loops.forEach((loop, i) => (s.candidates.fates[i] === 'packed' ? packed : rejected).add(loop));
   if (rejected.count > 0) {
-    out.push({ name: 'sk-rejected', layer: rejected.layer('Rejected loops', SK_COLORS.rejected, RADIUS.rejected * R), color: SK_COLORS.rejected });
+    out.push({ name: 'sk-rejected', layer: rejected.layer('Rejected loops', COLORS.rejected, RADIUS.rejected * R), color: COLORS.rejected });
   }
   if (packed.count > 0) {
-    out.push({ name: 'sk-packed', layer: packed.layer('Packed loops', SK_COLORS.packed, RADIUS.packed * R), color: SK_COLORS.packed });
+    out.push({ name: 'sk-packed', layer: packed.layer('Packed loops', COLORS.packed, RADIUS.packed * R), color: COLORS.packed });
   }
 
   const nodeCount = Math.floor(s.nodes.length / 3);
@@ -114,15 +114,15 @@ export function skeletonLayers(s: SkeletonData, surface: SurfaceLayer): NamedLay
       out.push({
         name: 'sk-edges',
         layer: new TubesLayer('Skeleton edges', graphSegments(s.nodes, s.edges), new Float32Array(0), {
-          color: SK_COLORS.edge,
+          color: COLORS.edge,
           radius: edgeRadius,
           glow: 0.25,
         }),
-        color: SK_COLORS.edge,
+        color: COLORS.edge,
       });
     }
     const radii = nodeRadii(s, R);
-    out.push({ name: 'sk-nodes', layer: new SpheresLayer('Skeleton nodes', s.nodes, radii, SK_COLORS.node), color: SK_COLORS.node });
+    out.push({ name: 'sk-nodes', layer: new SpheresLayer('Skeleton nodes', s.nodes, radii, COLORS.node), color: COLORS.node });
   }
   return out;
 }
@@ -175,7 +175,7 @@ export class ReconstructionLayer implements Layer {
     geometry.computeVertexNormals();
     geometry.computeBoundingSphere();
     const material = new THREE.MeshStandardMaterial({
-      color: SK_COLORS.reconstruction,
+      color: COLORS.reconstruction,
       roughness: 0.5,
       transparent: true,
       opacity: 0.3,

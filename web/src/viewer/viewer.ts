@@ -21,8 +21,8 @@ export class Viewer {
   readonly scene = new THREE.Scene();
   readonly camera = new THREE.PerspectiveCamera(35, 1, 0.01, 100);
   readonly controls: OrbitControls;
-  /** Called with the picked surface point when the user clicks (not drags) on the surface. */
-  onPick: ((pick: Pick) => void) | null = null;
+  /** Called with the window position when the user clicks (not drags) on the canvas. */
+  onClick: ((clientX: number, clientY: number) => void) | null = null;
   /** Called when layers are added or removed. */
   onLayersChange: (() => void) | null = null;
 
@@ -164,17 +164,28 @@ export class Viewer {
     this.pointerDown = null;
     if (!down || down.id !== e.pointerId || e.button !== 0) return;
     if (Math.hypot(e.clientX - down.x, e.clientY - down.y) > CLICK_SLOP_PX) return;
-    const pick = this.pick(e.clientX, e.clientY);
-    if (pick) this.onPick?.(pick);
+    this.onClick?.(e.clientX, e.clientY);
+  }
+
+  private rayAt(clientX: number, clientY: number): void {
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const ndc = new THREE.Vector2(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
+    this.raycaster.setFromCamera(ndc, this.camera);
+  }
+
+  /** The instance of a layer's InstancedMesh (e.g. a skeleton node sphere) under a window position, or null. */
+  pickInstance(layerName: string, clientX: number, clientY: number): number | null {
+    const object = this.layers.get(layerName)?.object;
+    if (!object?.visible) return null;
+    this.rayAt(clientX, clientY);
+    return this.raycaster.intersectObject(object, true)[0]?.instanceId ?? null;
   }
 
   /** The surface point under a window position, or null. */
   pick(clientX: number, clientY: number): Pick | null {
     const surface = this.surface;
     if (!surface || !surface.object.visible) return null;
-    const rect = this.renderer.domElement.getBoundingClientRect();
-    const ndc = new THREE.Vector2(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
-    this.raycaster.setFromCamera(ndc, this.camera);
+    this.rayAt(clientX, clientY);
     const hit = this.raycaster.intersectObject(surface.object, false)[0];
     if (!hit?.face || hit.faceIndex == null) return null;
     let vertex = hit.face.a;
@@ -190,8 +201,12 @@ export class Viewer {
   /** Window position of a vertex (for tests and overlays). */
   projectVertex(index: number): { x: number; y: number } | null {
     const surface = this.surface;
-    if (!surface) return null;
-    const p = surface.vertexPosition(index).project(this.camera);
+    return surface ? this.projectPoint(surface.vertexPosition(index).toArray()) : null;
+  }
+
+  /** Window position of a point in space. */
+  projectPoint(xyz: ArrayLike<number>): { x: number; y: number } {
+    const p = new THREE.Vector3(xyz[0], xyz[1], xyz[2]).project(this.camera);
     const rect = this.renderer.domElement.getBoundingClientRect();
     return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
   }

@@ -18,6 +18,7 @@ import {
   type ReplyFor,
   type WorkerMessage,
   type WorkerRequest,
+  type WriteRequest,
 } from './protocol.ts';
 
 /** An error reported by the worker for one request; `kind` says whether the worker survived it. */
@@ -122,6 +123,11 @@ export class GeometryClient {
   /** The reconstruction error of the last skeleton the worker computed on the open mesh. */
   evaluate(): Promise<ReplyFor['evaluate']> {
     return this.request({ type: 'evaluate' });
+  }
+
+  /** A file of the last skeleton the worker computed (see WriteRequest). */
+  write(what: WriteRequest['what'], mesh: string): Promise<ReplyFor['write']> {
+    return this.request({ type: 'write', what, mesh });
   }
 
   /** Test hook: the worker fails as if the WASM core had aborted, dies of an uncaught error, or hangs. */

@@ -6,6 +6,7 @@
  * travel in transfer lists in both directions (see `transferables`).
  */
 import type { Evaluation, MeshFacts, Options, Separator, Skeleton } from '../../../lib/core/types.ts';
+import type { SkeletonFormat } from '../../../lib/io/skeleton.ts';
 import type { MeshFormat } from '../../../lib/io/types.ts';
 
 // ---------------------------------------------------------------------------------------------
@@ -70,6 +71,15 @@ export interface EvaluateRequest {
   id: number;
 }
 
+/** A file of the last skeleton the worker computed: the skeleton in a format, or its packed separators (OBJ loops). */
+export interface WriteRequest {
+  type: 'write';
+  id: number;
+  what: SkeletonFormat | 'separators-obj';
+  /** The mesh's name, written into the file's header. */
+  mesh: string;
+}
+
 /**
  * Asks the worker to stop the `skeleton` request with this `id` between two steps. It has no reply of
  * its own: the request it names answers with an `error` of kind `cancelled` (or with its result, when
@@ -86,6 +96,7 @@ export type WorkerRequest =
   | SeparatorRequest
   | SkeletonRequest
   | EvaluateRequest
+  | WriteRequest
   | CancelRequest
   | CrashRequest;
 
@@ -181,6 +192,13 @@ export interface EvaluationReply {
   timings: { evaluateMs: number };
 }
 
+export interface WrittenReply {
+  type: 'written';
+  id: number;
+  /** The file's bytes (UTF-8 text), transferred. */
+  bytes: Uint8Array;
+}
+
 /**
  * `format`: the file is not a readable mesh; `core`: the core refused the input or computation;
  * both leave the worker usable. `crash`: the WASM core aborted or the worker hit an unexpected
@@ -218,7 +236,7 @@ export interface ProgressEvent {
   pipeline?: PipelineNews;
 }
 
-export type WorkerReply = OpenedReply | DistanceReply | SeparatorReply | SkeletonReply | EvaluationReply | ErrorReply;
+export type WorkerReply = OpenedReply | DistanceReply | SeparatorReply | SkeletonReply | EvaluationReply | WrittenReply | ErrorReply;
 export type WorkerMessage = WorkerReply | ProgressEvent;
 
 /** The reply type that answers each request type. */
@@ -228,6 +246,7 @@ export interface ReplyFor {
   separator: SeparatorReply;
   skeleton: SkeletonReply;
   evaluate: EvaluationReply;
+  write: WrittenReply;
   cancel: never;
   crash: never;
 }

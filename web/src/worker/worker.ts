@@ -5,8 +5,10 @@
  */
 import { createCore } from '../../../lib/core/index.ts';
 import { defaultOptions } from '../../../lib/core/options.ts';
-import type { Core, MeshArrays, Options, Pipeline, Separator, Skeleton, SkeletonInput, Surface } from '../../../lib/core/types.ts';
+import type { Core, MeshArrays, Options, Pipeline, Separator, Skeleton, Surface } from '../../../lib/core/types.ts';
 import { parseMesh } from '../../../lib/io/index.ts';
+import { writeLoopsObj } from '../../../lib/io/loops.ts';
+import { SKELETON_WRITERS } from '../../../lib/io/skeleton.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
 import {
   transferables,
@@ -20,6 +22,7 @@ import {
   type SkeletonData,
   type SkeletonRequest,
   type WorkerMessage,
+  type WriteRequest,
   type WorkerRequest,
 } from './protocol.ts';
 
@@ -41,8 +44,8 @@ interface OpenMesh {
   surfaceError: string | null;
   /** The source of the last separator request, for re-runs with other options. */
   lastSource: number | null;
-  /** The last skeleton computed, in full precision, for `evaluate`. */
-  lastSkeleton: SkeletonInput | null;
+  /** The last skeleton computed, in full precision, with its options, for `evaluate` and `write`. */
+  lastSkeleton: { skeleton: Skeleton; options: Options } | null;
 }
 let current: OpenMesh | null = null;
 
@@ -299,7 +302,7 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
     const t = performance.now();
     const result = pipeline.finish();
     const stage2Ms = performance.now() - t;
-    current.lastSkeleton = { nodes: result.nodes, edges: result.edges, radii: result.radii };
+    current.lastSkeleton = { skeleton: result, options };
     const data = skeletonToWire(result);
     const c = data.candidates;
     post(
@@ -320,13 +323,35 @@ async function evaluate(request: EvaluateRequest): Promise<void> {
   const core = await loadCore(id);
   progress(id, 'evaluate', 'reconstructing the surface from the skeleton…');
   const t = performance.now();
-  const result = core.evaluate(current.mesh, current.lastSkeleton);
+  const result = core.evaluate(current.mesh, current.lastSkeleton.skeleton);
   const evaluateMs = performance.now() - t;
   const evaluation = { ...result, radii: f32(result.radii), vertexError: f32(result.vertexError) };
   post(
     { type: 'evaluation', id, evaluation, timings: { evaluateMs } },
     transferables(evaluation.radii, evaluation.vertexError, evaluation.surface.positions, evaluation.surface.triangles),
   );
+}
+
+// -- files ----------------------------------------------------------------------------------------
+
+/**
+ * Writes the last skeleton (or its packed separators) as a file's bytes. Done here rather than on the
+ * page: the worker holds the skeleton in full precision (the page has float32 copies for the GPU), and
+ * formatting a large skeleton stays off the main thread.
+ */
+function write(request: WriteRequest): void {
+  const last = current?.lastSkeleton;
+  if (!last) throw new UserError('core', 'There is no skeleton to save: compute one first.');
+  const { skeleton, options } = last;
+  const text =
+    request.what === 'separators-obj'
+      ? writeLoopsObj(
+          Array.from(skeleton.packed, (i) => skeleton.candidates.loops[i]),
+          [`CSCD packed separators of ${request.mesh}`, `options ${JSON.stringify(options)}`],
+        )
+      : SKELETON_WRITERS[request.what](skeleton, { mesh: request.mesh, options });
+  const bytes = new TextEncoder().encode(text);
+  post({ type: 'written', id: request.id, bytes }, transferables(bytes));
 }
 
 async function handle(request: WorkerRequest): Promise<void> {
@@ -342,6 +367,8 @@ async function handle(request: WorkerRequest): Promise<void> {
         return await skeleton(request);
       case 'evaluate':
         return await evaluate(request);
+      case 'write':
+        return write(request);
       case 'cancel':
         return; // handled on arrival
       case 'crash':

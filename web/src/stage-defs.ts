@@ -1,0 +1,201 @@
+/**
+ * The studio's stages, in the order of the timeline: what each one shows (its viewer layers, which of
+ * them are context drawn muted, its legend), what it explains, and the layer colours. One list for
+ * the whole page: the timeline, the stage card, the layer list and the viewer all read it.
+ */
+
+/** Layer colours (sRGB), shared by the viewer layers, the legends and the layer list. */
+export const COLORS = {
+  source: '#ffffff',
+  cutLocus: '#ffd21a',
+  target: '#a34dff',
+  path1: '#ff3131',
+  path2: '#74ff2e',
+  approxLoop: '#ff8c00',
+  sphere: '#8fc3ff',
+  loop: '#00e1ff',
+  /** Candidate loops while they arrive. */
+  candidate: '#ffd21a',
+  packed: '#00e1ff',
+  rejected: '#ff4f9a',
+  node: '#ff6a2b',
+  edge: '#ffb02e',
+  /** The selected skeleton node's halo. */
+  highlight: '#ffffff',
+  /** The reconstructed surface of the evaluation. */
+  reconstruction: '#9fc4ff',
+} as const;
+
+export type StageKey =
+  | 'mesh'
+  | 'geodesics'
+  | 'cut-locus'
+  | 'paths'
+  | 'loop'
+  | 'separators'
+  | 'packing'
+  | 'regions'
+  | 'skeleton'
+  | 'reconstruction';
+
+/** `source`: stage 1 from one source vertex (teaching); `shape`: the whole pipeline. */
+export type StageGroup = 'mesh' | 'source' | 'shape';
+
+export interface StageDef {
+  key: StageKey;
+  title: string;
+  group: StageGroup;
+  /** Paper reference. */
+  section: string;
+  /** What the picture shows and why the step exists, for a student who knows what a geodesic is. */
+  caption: string;
+  /** Viewer layers shown in this stage (the surface always is). */
+  layers: string[];
+  /** Of those, the ones drawn muted (context from an earlier stage). */
+  dimmed?: string[];
+  legend: Array<{ layer: string; label: string; color: string }>;
+  /** What a click on the surface does here (the viewport hint). */
+  click: string;
+}
+
+const PICK = 'click the surface to run stage 1 from that vertex';
+const SOURCE = ['source'];
+const PATHS = ['target', 'path-1', 'path-2'];
+
+export const STAGES: readonly StageDef[] = [
+  {
+    key: 'mesh',
+    title: 'Mesh',
+    group: 'mesh',
+    section: 'Sec. 3',
+    caption:
+      'The input: a closed triangle mesh, read as a continuous surface. CSCD needs it manifold and consistently oriented so that geodesic distances exist; the panel lists its facts (genus = the number of handles, which the skeleton will show as cycles).',
+    layers: [],
+    legend: [],
+    click: PICK,
+  },
+  {
+    key: 'geodesics',
+    title: 'Geodesics',
+    group: 'source',
+    section: 'Sec. 4.1.1',
+    caption:
+      'Geodesic distance from the source vertex (heat method on the intrinsic Delaunay triangulation), blue near and red far, with isolines. Every later step of stage 1 is read off this field.',
+    layers: SOURCE,
+    legend: [{ layer: 'source', label: 'source', color: COLORS.source }],
+    click: PICK,
+  },
+  {
+    key: 'cut-locus',
+    title: 'Cut locus',
+    group: 'source',
+    section: 'Sec. 4.1.2',
+    caption:
+      'Where shortest paths from the source collide: the ridges of the distance, kept as a graph on mesh vertices. It reaches around every part of the shape the source cannot see directly; on a closed surface its cycle rank is twice the genus.',
+    layers: [...SOURCE, 'cut-locus'],
+    legend: [{ layer: 'cut-locus', label: 'cut locus', color: COLORS.cutLocus }],
+    click: PICK,
+  },
+  {
+    key: 'paths',
+    title: 'Target & paths',
+    group: 'source',
+    section: 'Sec. 4.1.3–4.1.4',
+    caption:
+      'The target is the cut-locus point nearest to the source. From it, two steepest-descent paths run down the distance on the two sides of the cut locus until they meet: together they go once around the part the target sits on.',
+    layers: [...SOURCE, 'cut-locus', ...PATHS],
+    dimmed: ['cut-locus'],
+    legend: [
+      { layer: 'target', label: 'target', color: COLORS.target },
+      { layer: 'path-1', label: 'path 1', color: COLORS.path1 },
+      { layer: 'path-2', label: 'path 2', color: COLORS.path2 },
+    ],
+    click: PICK,
+  },
+  {
+    key: 'loop',
+    title: 'Loop',
+    group: 'source',
+    section: 'Sec. 4.1.4–4.1.6, 4.2.1',
+    caption:
+      'The two paths joined give the approximate loop (orange): closed, but it zig-zags along edges. Edge flips shorten it inside the constraint sphere (translucent; the tinted patch is the surface inside it), which keeps the separator local. The result (cyan) cuts the surface in two locally; its score is A1 / (A2 · length), A1 ≤ A2 the areas on its two sides.',
+    layers: [...SOURCE, 'cut-locus', ...PATHS, 'approx-loop', 'sphere', 'loop'],
+    dimmed: ['cut-locus', ...PATHS],
+    legend: [
+      { layer: 'approx-loop', label: 'approximate loop', color: COLORS.approxLoop },
+      { layer: 'sphere', label: 'constraint sphere', color: COLORS.sphere },
+      { layer: 'loop', label: 'shortened loop', color: COLORS.loop },
+    ],
+    click: PICK,
+  },
+  {
+    key: 'separators',
+    title: 'All separators',
+    group: 'shape',
+    section: 'Sec. 4.1, 4.2.1, Alg. 1',
+    caption:
+      'Stage 1 from N sources spread over the surface (farthest-point sampling; auto N stops when the loops cover the surface), one candidate loop each, drawn as they arrive.',
+    layers: ['sk-progress', 'sk-rejected', 'sk-packed'],
+    legend: [
+      { layer: 'sk-progress', label: 'candidate', color: COLORS.candidate },
+      { layer: 'sk-packed', label: 'packed', color: COLORS.packed },
+      { layer: 'sk-rejected', label: 'rejected', color: COLORS.rejected },
+    ],
+    click: 'drag to orbit',
+  },
+  {
+    key: 'packing',
+    title: 'Packing',
+    group: 'shape',
+    section: 'Sec. 4.2.2–4.2.3',
+    caption:
+      'Short loops and loops whose centroid lies outside the shape are pruned; greedy weighted set packing then keeps the high-scoring loops that overlap no other kept loop. Each kept loop is one local separator of the shape.',
+    layers: ['sk-packed'],
+    legend: [{ layer: 'sk-packed', label: 'packed loop', color: COLORS.packed }],
+    click: 'drag to orbit',
+  },
+  {
+    key: 'regions',
+    title: 'Regions',
+    group: 'shape',
+    section: 'Sec. 4.2.4',
+    caption:
+      'Every vertex belongs to the packed loop nearest to it along the surface (a watershed from all loops at once), so each loop owns the region around it; one colour per region. Each region becomes a node of the skeleton.',
+    layers: ['sk-packed'],
+    dimmed: ['sk-packed'],
+    legend: [],
+    click: 'click a region to select its skeleton node',
+  },
+  {
+    key: 'skeleton',
+    title: 'Skeleton',
+    group: 'shape',
+    section: 'Sec. 4.2.4',
+    caption:
+      'One node per region, centred in its separator loop, drawn as a sphere sized by its radius (the tube that best fits the surface around it); edges join regions that touch, and where three or more regions meet a branch node joins them. The mesh is drawn see-through.',
+    layers: ['sk-edges', 'sk-nodes', 'sk-highlight'],
+    legend: [
+      { layer: 'sk-nodes', label: 'node', color: COLORS.node },
+      { layer: 'sk-edges', label: 'edge', color: COLORS.edge },
+    ],
+    click: 'click a node or the surface to see its region',
+  },
+  {
+    key: 'reconstruction',
+    title: 'Reconstruction',
+    group: 'shape',
+    section: 'Sec. 5',
+    caption:
+      'The shape rebuilt from the skeleton alone (a convolution surface of its nodes and radii, see-through) and each vertex coloured by its squared distance to it: the paper’s reconstruction error, on the mesh scaled to unit bounding-box diagonal.',
+    layers: ['sk-recon'],
+    legend: [{ layer: 'sk-recon', label: 'reconstructed surface', color: COLORS.reconstruction }],
+    click: 'drag to orbit',
+  },
+];
+
+export const stageIndex = (key: StageKey): number => STAGES.findIndex((s) => s.key === key);
+export const stageDef = (key: StageKey): StageDef => STAGES[stageIndex(key)];
+export const isStageKey = (value: string | null | undefined): value is StageKey => STAGES.some((s) => s.key === value);
+
+/** The source stages, in order (a stage-1 run that stopped early reaches only a prefix of them). */
+export const SOURCE_STAGES: readonly StageKey[] = STAGES.filter((s) => s.group === 'source').map((s) => s.key);

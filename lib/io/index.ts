@@ -38,6 +38,9 @@ export function formatFromName(name: string): MeshFormat | null {
 export function parseMesh(bytes: Uint8Array, fileName: string): ParsedMesh {
   const named = formatFromName(fileName);
   if (bytes.length === 0) throw new MeshFormatError(`${named ? FORMAT_LABEL[named] : fileName}: file is empty`);
+  // Windows editors start UTF-8 text with a byte order mark, which no format expects (a binary STL's
+  // free-form header may begin with the same bytes: its exact size tells it apart).
+  if (bytes[0] === 0xef && bytes[1] === 0xbb && bytes[2] === 0xbf && !isBinaryStl(bytes)) bytes = bytes.subarray(3);
   const sniffed = sniffFormat(bytes);
   let format: MeshFormat;
   let warning: string | null = null;

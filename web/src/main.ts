@@ -150,7 +150,7 @@ function showMesh(reply: OpenedReply, sample: string | null): void {
 
   panel.setFile(reply.fileName, reply.format);
   panel.setFacts(reply.facts);
-  const notes = [...reply.warnings];
+  const notes = [...reply.warnings, ...reply.repairs.map((repair) => `Repaired: ${repair}`)];
   const { degenerateFaces, unreferencedVertices } = reply.facts;
   if (degenerateFaces) notes.push(`${degenerateFaces} degenerate face${degenerateFaces > 1 ? 's' : ''} (repeated vertex or zero area)`);
   if (unreferencedVertices) notes.push(`${unreferencedVertices} ${unreferencedVertices > 1 ? 'vertices' : 'vertex'} used by no face`);

@@ -119,6 +119,8 @@ export interface OpenedReply {
   triangles: Uint32Array;
   facts: MeshFacts;
   warnings: string[];
+  /** What the repair on load did (lib/io/repair.ts), one sentence each; the arrays and facts are after it. */
+  repairs: string[];
   /** Why geodesic computations are unavailable on this mesh (e.g. non-manifold), or null. */
   surfaceError: string | null;
   timings: OpenTimings;

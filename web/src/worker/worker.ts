@@ -7,6 +7,7 @@ import { createCore } from '../../../lib/core/index.ts';
 import { defaultOptions } from '../../../lib/core/options.ts';
 import type { Core, MeshArrays, Options, Pipeline, Separator, Skeleton, Surface } from '../../../lib/core/types.ts';
 import { parseMesh } from '../../../lib/io/index.ts';
+import { repairMesh } from '../../../lib/io/repair.ts';
 import { writeLoopsObj } from '../../../lib/io/loops.ts';
 import { SKELETON_WRITERS } from '../../../lib/io/skeleton.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
@@ -92,7 +93,10 @@ async function open(request: OpenRequest): Promise<void> {
   const { id, fileName } = request;
   progress(id, 'parse', `reading ${fileName}…`);
   let t = performance.now();
-  const mesh = parseMesh(new Uint8Array(request.bytes), fileName);
+  const parsed = parseMesh(new Uint8Array(request.bytes), fileName);
+  // Repair on load is part of reading the file: the page only ever sees the repaired mesh.
+  const { mesh: arrays, repairs } = repairMesh(parsed);
+  const mesh = { ...parsed, ...arrays };
   const parseMs = performance.now() - t;
 
   const core = await loadCore(id);
@@ -132,6 +136,7 @@ async function open(request: OpenRequest): Promise<void> {
       triangles,
       facts,
       warnings: mesh.warnings,
+      repairs,
       surfaceError,
       timings: { parseMs, inspectMs, prepareMs },
     },

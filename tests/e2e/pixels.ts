@@ -122,6 +122,17 @@ export function frameDifference(a: PixelStats, b: PixelStats): number {
   return cells ? sum / (3 * cells) : 0;
 }
 
+/** The largest difference (0..255, mean over RGB) between two frames' thumbnails in any one cell: a local change. */
+export function maxCellDifference(a: PixelStats, b: PixelStats): number {
+  let max = 0;
+  for (let c = 0; c < a.thumb.length; c += 3) {
+    let d = 0;
+    for (let k = 0; k < 3; k++) d += Math.abs(a.thumb[c + k] - b.thumb[c + k]);
+    max = Math.max(max, d / 3);
+  }
+  return max;
+}
+
 /** Clicks the drawn geometry near its middle (the page treats a press-release without drag as a pick). */
 export async function clickMesh(page: Page, stats: PixelStats): Promise<void> {
   expect(stats.meshPoint, 'no mesh pixels to click on').not.toBeNull();

@@ -437,6 +437,10 @@ window.cscd = {
 
 // -- start: the linked view, or the default sample --------------------------------------------------
 
+// The page writes its address with replaceState, which fires no hashchange: this is a link pasted or
+// edited in the address bar, and reloading is the simplest way to follow it.
+window.addEventListener('hashchange', () => location.reload());
+
 void (async () => {
   refresh();
   const sample = sampleByName(initial.mesh) ?? DEFAULT_SAMPLE;

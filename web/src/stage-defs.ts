@@ -173,7 +173,7 @@ export const STAGES: readonly StageDef[] = [
     section: 'Sec. 4.2.4',
     caption:
       'One node per region, centred in its separator loop, drawn as a sphere sized by its radius (the tube that best fits the surface around it); edges join regions that touch, and where three or more regions meet a branch node joins them. The mesh is drawn see-through.',
-    layers: ['sk-edges', 'sk-nodes', 'sk-highlight'],
+    layers: ['sk-edges', 'sk-nodes', 'sk-highlight', 'sk-region'],
     legend: [
       { layer: 'sk-nodes', label: 'node', color: COLORS.node },
       { layer: 'sk-edges', label: 'edge', color: COLORS.edge },

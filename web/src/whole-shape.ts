@@ -14,14 +14,15 @@ import { changedOptions } from './single-source.ts';
 import { COLORS, type StageKey } from './stage-defs.ts';
 import { byTestId, formatLength } from './ui/panel.ts';
 import { SkeletonPanel } from './ui/skeleton-panel.ts';
-import { TRANSLUCENT_COLOR } from './viewer/layers.ts';
 import {
   LoopSet,
   ReconstructionLayer,
+  RegionLayer,
   candidateRadius,
   errorVertexColors,
   nodeRadii,
   regionColor,
+  regionTriangles,
   regionVertexColors,
   skeletonLayers,
 } from './viewer/skeleton-layers.ts';
@@ -54,8 +55,8 @@ export class WholeShape {
   private lastNews: PipelineNews | null = null;
   private regionColors: string[] = [];
   private vertexColors: Float32Array | null = null;
-  /** The region colours with the selected region picked out: over the opaque and the see-through surface. */
-  private selectedColors: { opaque: Float32Array; clear: Float32Array } | null = null;
+  /** The region colours with every region but the selected one greyed. */
+  private selectedColors: Float32Array | null = null;
   private errorColors: Float32Array | null = null;
   private evaluating: Promise<void> | null = null;
   private runs = 0;
@@ -259,9 +260,7 @@ export class WholeShape {
       // bulges out, the colours where it falls short.
       surface.setRegionColors(this.errorColors, 1);
     } else if (key === 'regions' && this.vertexColors) {
-      surface.setRegionColors(selected?.opaque ?? this.vertexColors, 1);
-    } else if (key === 'skeleton' && selected) {
-      surface.setRegionColors(selected.clear, 1);
+      surface.setRegionColors(selected ?? this.vertexColors, 1);
     } else {
       surface.setRegionColorMix(0);
     }
@@ -302,6 +301,7 @@ export class WholeShape {
     this.selected = s && surface ? node : null;
     this.selectedColors = null;
     viewer.setLayer('sk-highlight', null);
+    viewer.setLayer('sk-region', null);
     const info = byTestId('sk-selection');
     if (this.selected === null || !s || !surface || !this.vertexColors) {
       info.hidden = true;
@@ -311,23 +311,24 @@ export class WholeShape {
     }
     const n = this.selected;
     const grey = new THREE.Color(0x8a8780).toArray();
-    const clear = new THREE.Color(TRANSLUCENT_COLOR).toArray();
-    const opaque = Float32Array.from(this.vertexColors);
-    const see = new Float32Array(opaque.length);
+    const colors = Float32Array.from(this.vertexColors);
     let owned = 0;
     for (let v = 0; v < surface.vertexCount; v++) {
-      const mine = s.vertexToNode[v] === n;
-      if (mine) owned++;
-      for (let k = 0; k < 3; k++) {
-        const c = opaque[3 * v + k];
-        if (!mine) opaque[3 * v + k] = c * 0.3 + grey[k] * 0.7;
-        see[3 * v + k] = mine ? c : clear[k];
+      if (s.vertexToNode[v] === n) {
+        owned++;
+        continue;
       }
+      for (let k = 0; k < 3; k++) colors[3 * v + k] = colors[3 * v + k] * 0.3 + grey[k] * 0.7;
     }
-    this.selectedColors = { opaque, clear: see };
+    this.selectedColors = colors;
     const r = nodeRadii(s, surface.boundingSphere.radius)[n] * 1.9;
     this.ctx.layerColors.set('sk-highlight', COLORS.highlight);
     viewer.setLayer('sk-highlight', new GlassSphereLayer('Selected node', s.nodes.subarray(3 * n, 3 * n + 3), r, COLORS.highlight));
+    if (owned > 0) {
+      const triangles = regionTriangles(surface.geometry.getIndex()!.array, s.vertexToNode, n);
+      this.ctx.layerColors.set('sk-region', regionColor(n));
+      viewer.setLayer('sk-region', new RegionLayer('Selected region', surface.geometry, triangles, regionColor(n)));
+    }
     const radius = s.radii[n];
     const chip = document.createElement('span');
     chip.className = 'swatch';

@@ -20,7 +20,7 @@ export const DIM_MIX = 0.62;
 
 const BASE_COLOR = 0xc4c0b8;
 /** The surface's colour while translucent: cool and light, so a warm skeleton inside stands out. */
-export const TRANSLUCENT_COLOR = 0xdfe8f5;
+const TRANSLUCENT_COLOR = 0xdfe8f5;
 
 /** Values below this in the scalar attribute mean "no value" (drawn in the base colour). */
 const NO_VALUE = -1;

@@ -160,6 +160,54 @@ export function regionVertexColors(vertexToNode: Uint32Array, nodeCount: number,
   return out;
 }
 
+/**
+ * Part of the surface (the triangles of a selected region) drawn over the see-through surface in its
+ * region's colour, so it reads as solid. Shares the surface's vertex buffers; only the index is its own.
+ */
+export class RegionLayer implements Layer {
+  readonly object: THREE.Mesh<THREE.BufferGeometry, THREE.MeshStandardMaterial>;
+
+  constructor(
+    readonly label: string,
+    surface: THREE.BufferGeometry,
+    triangles: Uint32Array,
+    color: THREE.ColorRepresentation,
+  ) {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', surface.getAttribute('position'));
+    geometry.setAttribute('normal', surface.getAttribute('normal'));
+    geometry.setIndex(new THREE.BufferAttribute(triangles, 1));
+    geometry.boundingSphere = surface.boundingSphere;
+    const material = new THREE.MeshStandardMaterial({
+      color,
+      roughness: 0.6,
+      emissive: color,
+      emissiveIntensity: 0.2,
+      transparent: true,
+      opacity: 0.62,
+      depthWrite: false,
+      side: THREE.DoubleSide,
+    });
+    this.object = new THREE.Mesh(geometry, material);
+    this.object.renderOrder = 5; // over the see-through surface, under the glass halo
+  }
+
+  dispose(): void {
+    // Not geometry.dispose(): that would free the GPU buffers it shares with the surface.
+    this.object.material.dispose();
+  }
+}
+
+/** The triangles whose three corners all belong to `node`'s region. */
+export function regionTriangles(triangles: ArrayLike<number>, vertexToNode: Uint32Array, node: number): Uint32Array {
+  const out: number[] = [];
+  for (let t = 0; t + 2 < triangles.length; t += 3) {
+    const a = triangles[t], b = triangles[t + 1], c = triangles[t + 2];
+    if (vertexToNode[a] === node && vertexToNode[b] === node && vertexToNode[c] === node) out.push(a, b, c);
+  }
+  return Uint32Array.from(out);
+}
+
 /** The skeleton's reconstructed (convolution) surface: a see-through shell over the input mesh. */
 export class ReconstructionLayer implements Layer {
   readonly object: THREE.Mesh<THREE.BufferGeometry, THREE.MeshStandardMaterial>;

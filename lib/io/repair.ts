@@ -11,7 +11,8 @@
  * 3. remove duplicate faces (the same three vertices as an earlier face, in any order);
  * 4. split non-manifold edges: of the faces on an edge, the first pair running along it in opposite
  *    directions (else the first two) stays joined; the others are detached, not dropped, so no
- *    surface is lost: they get their own copies of the edge's vertices;
+ *    surface is lost: they get their own copies of the edge's vertices (where the pair joins the
+ *    others around a vertex anyway, as two closed surfaces sharing an edge do, all are cut apart);
  * 5. split non-manifold vertices: one copy of the vertex per fan of faces joined across edges;
  * 6. orient: per connected component, faces are flipped to agree with the majority of their
  *    component; then a closed component faces outward (positive volume) unless it lies inside an
@@ -87,25 +88,25 @@ export function repairMesh<P extends MeshArrays['positions']>(mesh: { positions:
   // an edge with more than two faces (the pair's fans join the others around a vertex), cut them all.
   const origin: number[] = []; // input vertex of every copy, in order
   let edges = buildEdges(tri, vertexCount);
-  let nonManifoldEdges = 0, detachedFaces = 0, edgeCopies = 0, pointCopies = 0, pointVertices = 0;
+  let nonManifold: number[][] = [], edgeCopies = 0, pointCopies = 0, pointVertices = 0;
   for (const mode of ['keep-pair', 'cut-all'] as const) {
+    if (mode === 'cut-all' && !edges.hasNonManifoldEdge) break;
     const split = splitNonManifold(tri, edges, vertexCount, mode);
-    if (mode === 'keep-pair') {
-      nonManifoldEdges = split.nonManifoldEdges;
-      detachedFaces = split.detachedFaces;
-      pointVertices = split.pointVertices;
-      pointCopies = split.pointCopies;
-    }
+    if (mode === 'keep-pair') ({ nonManifold, pointVertices, pointCopies } = split);
     edgeCopies += split.edgeCopies;
-    if (split.copyOf.length === 0) break;
+    if (split.copyOf.length === 0) continue;
     origin.push(...split.copyOf);
     vertexCount += split.copyOf.length;
     edges = buildEdges(tri, vertexCount);
-    if (!edges.hasNonManifoldEdge) break;
   }
-  if (nonManifoldEdges > 0) {
-    repairs.push(`split ${count(nonManifoldEdges, 'non-manifold edge', 'non-manifold edges')} (more than two faces on an edge): `
-      + `detached ${count(detachedFaces, 'face', 'faces')} beyond the first consistently oriented pair onto ${count(edgeCopies, 'copied vertex', 'copied vertices')}`);
+  if (nonManifold.length > 0) {
+    // What each edge became: the distinct vertex pairs of its faces now.
+    const after = nonManifold.reduce((sum, corners) => sum + new Set(corners.map((c) => {
+      const a = tri[c], b = tri[next(c)];
+      return a < b ? `${a},${b}` : `${b},${a}`;
+    })).size, 0);
+    repairs.push(`split ${count(nonManifold.length, 'non-manifold edge', 'non-manifold edges')} (more than two faces on an edge) `
+      + `into ${count(after, 'edge', 'edges')} with ${count(edgeCopies, 'copied vertex', 'copied vertices')}`);
   }
   if (pointVertices > 0) {
     repairs.push(`split ${count(pointVertices, 'non-manifold vertex', 'non-manifold vertices')} (faces meeting only at a point) into ${pointVertices + pointCopies}`);
@@ -366,25 +367,20 @@ function splitNonManifold(tri: Uint32Array, edges: Edges, nV: number, mode: 'kee
     uf.unite(cornerAt(c1, tri[next(c1)]), cornerAt(c2, tri[next(c1)]));
   };
   const onCutEdge = new Uint8Array(nV);
-  let nonManifoldEdges = 0, detachedFaces = 0;
+  const nonManifold: number[][] = []; // the corners of each edge with more than two faces
   for (let e = 0; e + 1 < edgeStart.length; e++) {
     const first = edgeStart[e], n = edgeStart[e + 1] - first;
     if (n === 2) join(edgeCorners[first], edgeCorners[first + 1]);
     if (n <= 2) continue;
-    nonManifoldEdges++;
-    const c0 = edgeCorners[first];
-    onCutEdge[tri[c0]] = onCutEdge[tri[next(c0)]] = 1;
-    if (mode === 'cut-all') {
-      detachedFaces += n;
-      continue;
-    }
-    detachedFaces += n - 2;
-    let pair: [number, number] = [edgeCorners[first], edgeCorners[first + 1]];
+    const corners = Array.from(edgeCorners.subarray(first, first + n));
+    nonManifold.push(corners);
+    onCutEdge[tri[corners[0]]] = onCutEdge[tri[next(corners[0])]] = 1;
+    if (mode === 'cut-all') continue;
+    let pair = [corners[0], corners[1]];
     search: for (let i = 0; i < n; i++) {
       for (let j = i + 1; j < n; j++) {
-        const ci = edgeCorners[first + i], cj = edgeCorners[first + j];
-        if (tri[ci] === tri[next(cj)]) {
-          pair = [ci, cj];
+        if (tri[corners[i]] === tri[next(corners[j])]) {
+          pair = [corners[i], corners[j]];
           break search;
         }
       }
@@ -417,7 +413,7 @@ function splitNonManifold(tri: Uint32Array, edges: Edges, nV: number, mode: 'kee
     }
     tri[c] = fanVertex[root];
   }
-  return { copyOf, nonManifoldEdges, detachedFaces, edgeCopies, pointCopies, pointVertices };
+  return { copyOf, nonManifold, edgeCopies, pointCopies, pointVertices };
 }
 
 /**

@@ -134,9 +134,7 @@ describe('repairs', () => {
   it('detaches the third face of a fin edge', () => {
     const fin = mesh([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1], [0, 1, 2, 1, 0, 3, 0, 1, 4]);
     const result = repairMesh(fin);
-    expect(result.repairs).toEqual([
-      'split 1 non-manifold edge (more than two faces on an edge): detached 1 face beyond the first consistently oriented pair onto 2 copied vertices',
-    ]);
+    expect(result.repairs).toEqual(['split 1 non-manifold edge (more than two faces on an edge) into 2 edges with 2 copied vertices']);
     // Faces 0 and 1 (a consistent pair) stay joined along 0-1; face 2 gets copies 5 and 6 of 0 and 1.
     expect(Array.from(result.mesh.triangles)).toEqual([0, 1, 2, 1, 0, 3, 5, 6, 4]);
     expect(expectClean(result.mesh)).toMatchObject({ vertices: 7, components: 2, boundaryLoops: 2 });
@@ -147,9 +145,16 @@ describe('repairs', () => {
     const second = mesh([...TET_POSITIONS, 0, -1, 0, 0, 0, -1], [...TET_TRIANGLES, 0, 4, 1, 0, 1, 5, 0, 5, 4, 1, 4, 5]);
     expect(core.inspect(second).nonManifoldEdges).toBe(1);
     const result = repairMesh(second);
-    expect(result.repairs).toHaveLength(1);
-    expect(result.repairs[0]).toMatch(/^split 1 non-manifold edge/);
+    expect(result.repairs).toEqual(['split 1 non-manifold edge (more than two faces on an edge) into 2 edges with 2 copied vertices']);
     expect(expectClean(result.mesh)).toMatchObject({ vertices: 8, components: 2, boundaryLoops: 0, genus: 0 });
+
+    // Faces in another order: the first consistent pair is one face of each, so joining it would keep
+    // the four together around vertices 0 and 1; the edge is then cut apart completely.
+    const order = [0, 5, 1, 4, 2, 3, 6, 7];
+    const interleaved = mesh(Array.from(second.positions), order.flatMap((f) => Array.from(second.triangles.subarray(3 * f, 3 * f + 3))));
+    const apart = repairMesh(interleaved);
+    expect(apart.repairs).toEqual(['split 1 non-manifold edge (more than two faces on an edge) into 2 edges with 2 copied vertices']);
+    expect(expectClean(apart.mesh)).toMatchObject({ vertices: 8, components: 2, boundaryLoops: 0, genus: 0 });
   });
 
   it('removes degenerate and duplicate faces and unreferenced vertices, and maps the vertices', () => {

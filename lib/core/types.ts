@@ -117,7 +117,7 @@ export type CandidateFate = 'packed' | 'overlapping' | 'short' | 'outside' | 'fa
 
 /** The curve skeleton and what led to it (paper Sec. 4.2, Alg. 1). */
 export interface Skeleton {
-  /** Node positions (xyz) and radii: the mean distance from the node to its region's surface. */
+  /** Node positions (xyz) and radii: the radius of the tube that best fits the surface around the node. */
   nodes: Float64Array;
   radii: Float64Array;
   /** Pairs of node indices. */

@@ -3,7 +3,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core, type MeshArrays, type Skeleton } from '../../lib/core/node.ts';
-import { extremities, readMesh } from './support/meshes.ts';
+import { extremities, readMesh, torus } from './support/meshes.ts';
 import { sharedData, sharedMesh } from '../paths.ts';
 
 let core: Core;
@@ -84,6 +84,19 @@ describe('skeleton topology', () => {
 });
 
 describe('skeleton shape and bookkeeping', () => {
+  it('puts the nodes of a torus on its core circle, with the tube radius', () => {
+    // Ring radius 1, tube radius 0.3: a region's area centroid would sit 0.045 (r^2 / 2R) outside the circle.
+    const surface = core.openSurface(torus(1, 0.3, 96, 32));
+    const skeleton = surface.skeleton({});
+    surface.dispose();
+    expect(skeleton.stats.cycles).toBe(1);
+    for (let i = 0; i < skeleton.radii.length; i++) {
+      const [x, y, z] = point(skeleton.nodes, i);
+      expect(Math.hypot(Math.hypot(x, y) - 1, z), `node ${i} off the core circle`).toBeLessThan(0.01);
+      expect(skeleton.radii[i]).toBeCloseTo(0.3, 2);
+    }
+  });
+
   it('has a leaf in each finger and the wrist of the hand', () => {
     const mesh = readMesh(sharedMesh('hand.ply'));
     const surface = core.openSurface(mesh);

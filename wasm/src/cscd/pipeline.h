@@ -9,7 +9,7 @@
 //   double resolution()                         mean sample spacing (edge length)
 //   std::vector<std::vector<size_t>> overlaps(const std::vector<size_t>& candidates)
 //   Regions regions(const std::vector<size_t>& packed)
-//   void centre(SkeletonGraph& graph, const std::vector<size_t>& packed)   nodes outside the shape moved in
+//   void centre(SkeletonGraph& graph, const std::vector<size_t>& packed)   node positions and radii fitted to the shape
 
 #include "cscd/graph.h"
 #include "cscd/options.h"
@@ -116,7 +116,6 @@ public:
 
     SkeletonGraph& graph = skeleton.graph;
     graph.nodes = regions.centroid;
-    graph.radii = regions.radius;
     graph.weights = regions.area;
     graph.edges.assign(regions.adjacent.begin(), regions.adjacent.end());
     cliquesToStars(graph, regions.junctions);

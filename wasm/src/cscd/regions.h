@@ -16,7 +16,6 @@ struct Regions {
   std::vector<uint32_t> label; // per element: regions 0..separators-1 are the separators', then the rest
   size_t count = 0;
   std::vector<geometrycentral::Vector3> centroid; // area-weighted
-  std::vector<double> radius;                     // area-weighted mean distance from the centroid to the region
   std::vector<double> area;
   std::set<std::array<size_t, 2>> adjacent;  // regions that touch (sorted pairs)
   std::set<std::array<size_t, 3>> junctions; // regions that meet in one place (sorted triples)

@@ -4,6 +4,7 @@
 #include "cscd/union_find.h"
 #include "evaluate/closest_point.h"
 #include "mesh/mesh_check.h"
+#include "evaluate/tube_radii.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,24 +13,15 @@
 namespace cscd {
 namespace {
 
-std::vector<Vector3> meshVertices(const MeshArrays& mesh) {
-  std::vector<Vector3> vertices(mesh.vertexCount());
-  for (size_t i = 0; i < vertices.size(); i++)
-    vertices[i] = {mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]};
-  return vertices;
-}
-
-std::vector<std::array<uint32_t, 3>> meshTriangles(const MeshArrays& mesh) {
-  std::vector<std::array<uint32_t, 3>> triangles(mesh.faceCount());
-  for (size_t f = 0; f < triangles.size(); f++)
-    triangles[f] = {mesh.triangles[3 * f], mesh.triangles[3 * f + 1], mesh.triangles[3 * f + 2]};
-  return triangles;
-}
-
-std::vector<bool> referencedVertices(const MeshArrays& mesh) {
-  std::vector<bool> used(mesh.vertexCount(), false);
-  for (uint32_t v : mesh.triangles) used[v] = true;
-  return used;
+TriangleMesh toTriangleMesh(const MeshArrays& mesh) {
+  TriangleMesh out;
+  out.vertices.resize(mesh.vertexCount());
+  for (size_t i = 0; i < out.vertices.size(); i++)
+    out.vertices[i] = {mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]};
+  out.triangles.resize(mesh.faceCount());
+  for (size_t f = 0; f < out.triangles.size(); f++)
+    out.triangles[f] = {mesh.triangles[3 * f], mesh.triangles[3 * f + 1], mesh.triangles[3 * f + 2]};
+  return out;
 }
 
 void checkSkeleton(const SkeletonCurves& skeleton) {
@@ -72,34 +64,6 @@ double quantile(std::vector<double> values, double q) {
 
 } // namespace
 
-std::vector<double> deriveRadii(const MeshArrays& mesh, const SkeletonCurves& skeleton) {
-  std::vector<Vector3> vertices = meshVertices(mesh);
-  // Every node is a segment of its own too (a, a), so isolated nodes are found.
-  std::vector<std::array<uint32_t, 2>> segments = skeleton.edges;
-  for (uint32_t i = 0; i < skeleton.nodes.size(); i++) segments.push_back({i, i});
-  SegmentTree tree(skeleton.nodes, segments);
-
-  std::vector<double> weightedSum(skeleton.nodes.size(), 0), weight(skeleton.nodes.size(), 0);
-  std::vector<bool> used = referencedVertices(mesh);
-  for (size_t v = 0; v < vertices.size(); v++) {
-    if (!used[v]) continue;
-    SegmentTree::Hit hit = tree.closest(vertices[v]);
-    auto [a, b] = segments[hit.primitive];
-    double t = closestParameterOnSegment(vertices[v], skeleton.nodes[a], skeleton.nodes[b]);
-    double distance = std::sqrt(hit.distance2);
-    weightedSum[a] += (1 - t) * distance;
-    weight[a] += 1 - t;
-    weightedSum[b] += t * distance;
-    weight[b] += t;
-  }
-
-  std::vector<double> radii(skeleton.nodes.size());
-  TriangleTree surface(vertices, meshTriangles(mesh));
-  for (size_t i = 0; i < radii.size(); i++)
-    radii[i] = weight[i] > 1e-9 ? weightedSum[i] / weight[i] : std::sqrt(surface.closest(skeleton.nodes[i]).distance2);
-  return radii;
-}
-
 Evaluation evaluateSkeleton(const MeshArrays& mesh, SkeletonCurves skeleton) {
   MeshFacts facts = checkMesh(mesh).facts;
   checkSkeleton(skeleton);
@@ -110,7 +74,8 @@ Evaluation evaluateSkeleton(const MeshArrays& mesh, SkeletonCurves skeleton) {
   result.nodes = skeleton.nodes.size();
   result.cycles = cycleCount(skeleton);
   result.radiiDerived = skeleton.radii.empty();
-  if (result.radiiDerived) skeleton.radii = deriveRadii(mesh, skeleton);
+  TriangleMesh input = toTriangleMesh(mesh);
+  if (result.radiiDerived) skeleton.radii = tubeRadii(input, skeleton);
   result.radii = skeleton.radii;
   clock.lap("radii");
 
@@ -123,15 +88,14 @@ Evaluation evaluateSkeleton(const MeshArrays& mesh, SkeletonCurves skeleton) {
     throw InputError("the skeleton's reconstructed surface is empty: its radii are too small for the mesh");
 
   TriangleTree tree(result.surface.vertices, result.surface.triangles);
-  std::vector<Vector3> vertices = meshVertices(mesh);
-  std::vector<bool> used = referencedVertices(mesh);
+  std::vector<bool> used = referencedVertices(input);
   const double scale = 1e3 / (facts.bboxDiagonal * facts.bboxDiagonal);
-  result.vertexError.assign(vertices.size(), 0);
+  result.vertexError.assign(input.vertices.size(), 0);
   std::vector<double> errors;
-  errors.reserve(vertices.size());
-  for (size_t v = 0; v < vertices.size(); v++) {
+  errors.reserve(input.vertices.size());
+  for (size_t v = 0; v < input.vertices.size(); v++) {
     if (!used[v]) continue;
-    result.vertexError[v] = tree.closest(vertices[v]).distance2 * scale;
+    result.vertexError[v] = tree.closest(input.vertices[v]).distance2 * scale;
     errors.push_back(result.vertexError[v]);
   }
   double sum = 0;

@@ -26,17 +26,9 @@ struct Evaluation {
   std::vector<std::pair<std::string, double>> timings; // milliseconds per step
 };
 
-// Radii for a skeleton that has none: every mesh vertex is attributed to its closest point on the
-// skeleton's segments and lends its distance to the segment's two nodes, weighted linearly by where
-// that point lies (all to a node when it is the point); a node's radius is the weighted mean. It is
-// the radius of the tube that best fits the surface around the node, the same notion as the mean
-// distance to a region the CSCD skeleton reports. Nodes that no vertex chose get the distance to the
-// surface.
-std::vector<double> deriveRadii(const MeshArrays& mesh, const SkeletonCurves& skeleton);
-
 // Throws InputError for a mesh that is not one (see checkMesh) or a skeleton with no nodes, edges
 // naming missing nodes, non-finite coordinates, or radii of the wrong count or sign. Empty radii are
-// derived (deriveRadii).
+// derived from the mesh (tubeRadii).
 Evaluation evaluateSkeleton(const MeshArrays& mesh, SkeletonCurves skeleton);
 
 } // namespace cscd

@@ -19,6 +19,13 @@ Vector3 loopCentroid(const std::vector<Vector3>& loop) {
   return total > 0 ? sum / total : (loop.empty() ? sum : loop.front());
 }
 
+Vector3 loopNormal(const std::vector<Vector3>& loop) {
+  Vector3 c = loopCentroid(loop), area{0, 0, 0};
+  for (size_t i = 0; i < loop.size(); i++) area += cross(loop[i] - c, loop[(i + 1) % loop.size()] - c) / 2;
+  double length = norm(area);
+  return length > 0 ? area / length : Vector3{0, 0, 0};
+}
+
 double windingNumber(VertexPositionGeometry& geometry, Vector3 point) {
   double solidAngle = 0;
   for (Face f : geometry.mesh.faces()) {

@@ -10,6 +10,9 @@ namespace cscd {
 // Length-weighted centroid of a closed polyline (its points, the last joined to the first).
 geometrycentral::Vector3 loopCentroid(const std::vector<geometrycentral::Vector3>& loop);
 
+// Unit normal of the loop's vector area (the direction it winds around); zero for a degenerate loop.
+geometrycentral::Vector3 loopNormal(const std::vector<geometrycentral::Vector3>& loop);
+
 // Generalised winding number of the mesh around a point (1 inside a closed outward-oriented mesh,
 // 0 outside; fractional near holes), by summing the signed solid angles of the triangles.
 double windingNumber(geometrycentral::surface::VertexPositionGeometry& geometry, geometrycentral::Vector3 point);

@@ -1,5 +1,6 @@
 #include "mesh/realization.h"
 
+#include "evaluate/tube_radii.h"
 #include "mesh/measures.h"
 #include "mesh/overlap.h"
 #include "mesh/regions.h"
@@ -49,19 +50,36 @@ Regions MeshRealization::regions(const std::vector<size_t>& packed) {
 
 void MeshRealization::centre(SkeletonGraph& graph, const std::vector<size_t>& packed) const {
   auto inside = [&](const geometrycentral::Vector3& p) { return windingNumber(surface.geometry(), p) > 0.5; };
-  for (size_t node = 0; node < graph.nodes.size(); node++) {
-    if (inside(graph.nodes[node])) continue;
-    if (node < packed.size()) {
-      graph.nodes[node] = loopCentroid(loops[packed[node]]);
-    } else if (graph.weights[node] == 0) {
-      size_t heaviest = SIZE_MAX;
-      for (const auto& e : graph.edges) {
-        size_t other = e[0] == node ? e[1] : e[1] == node ? e[0] : SIZE_MAX;
-        if (other != SIZE_MAX && (heaviest == SIZE_MAX || graph.weights[other] > graph.weights[heaviest])) heaviest = other;
-      }
-      if (heaviest != SIZE_MAX) graph.nodes[node] = graph.nodes[heaviest];
-    }
+  for (size_t node = 0; node < packed.size(); node++) {
+    const auto& loop = loops[packed[node]];
+    geometrycentral::Vector3 c = loopCentroid(loop), n = loopNormal(loop);
+    graph.nodes[node] = c + dot(graph.nodes[node] - c, n) * n;
+    if (!inside(graph.nodes[node])) graph.nodes[node] = c;
   }
+  for (size_t node = packed.size(); node < graph.nodes.size(); node++) {
+    if (graph.weights[node] != 0 || inside(graph.nodes[node])) continue;
+    size_t heaviest = SIZE_MAX;
+    for (const auto& e : graph.edges) {
+      size_t other = e[0] == node ? e[1] : e[1] == node ? e[0] : SIZE_MAX;
+      if (other != SIZE_MAX && (heaviest == SIZE_MAX || graph.weights[other] > graph.weights[heaviest])) heaviest = other;
+    }
+    if (heaviest != SIZE_MAX) graph.nodes[node] = graph.nodes[heaviest];
+  }
+
+  // Radii fitted to the surface around the final skeleton (the same rule as for other tools'
+  // skeletons): the mean distance to a whole region overestimates a long region's tube.
+  TriangleMesh mesh;
+  const auto& geometry = surface.geometry();
+  for (size_t v = 0; v < surface.vertexCount(); v++) mesh.vertices.push_back(geometry.vertexPositions[v]);
+  for (auto f : surface.mesh().faces()) {
+    std::array<uint32_t, 3> t;
+    size_t k = 0;
+    for (auto v : f.adjacentVertices()) t[k++] = uint32_t(v.getIndex());
+    mesh.triangles.push_back(t);
+  }
+  SkeletonCurves curves{graph.nodes, {}, {}};
+  for (const auto& e : graph.edges) curves.edges.push_back({uint32_t(e[0]), uint32_t(e[1])});
+  graph.radii = tubeRadii(mesh, curves);
 }
 
 } // namespace cscd

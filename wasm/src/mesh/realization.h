@@ -20,9 +20,13 @@ public:
   double resolution() const { return surface.facts().meanEdgeLength; }
   std::vector<std::vector<size_t>> overlaps(const std::vector<size_t>& candidates) const;
   Regions regions(const std::vector<size_t>& packed);
-  // The centroid of a curved region (a bent tube, a thin curved ear) can fall outside the shape: such a
-  // node moves to its separator loop's centroid, which is inside (loops with an outside centroid were
-  // pruned); a branch node outside moves to its heaviest neighbour's position.
+  // A separator's node keeps its region centroid's position along the loop's normal (so end regions
+  // reach towards their tips) but takes the loop centroid's position across it: on a bent tube the
+  // outer side has more area and drags the region centroid outwards (by r^2 / 2R on a torus), while
+  // the centroid of a loop around the tube stays on its axis. A node that still falls outside the
+  // shape moves to the loop centroid, which is inside (loops with an outside centroid were pruned); a
+  // branch node outside moves to its heaviest neighbour's position. Radii are then fitted to the
+  // surface around the final skeleton (tubeRadii).
   void centre(SkeletonGraph& graph, const std::vector<size_t>& packed) const;
 
   // The loop of a candidate as the last stage-1 call produced it (for progressive display).

@@ -108,7 +108,6 @@ Regions assignRegions(Surface& surface, const std::vector<std::vector<SurfacePoi
 
   geometry.requireVertexDualAreas();
   regions.centroid.assign(regions.count, Vector3{0, 0, 0});
-  regions.radius.assign(regions.count, 0);
   regions.area.assign(regions.count, 0);
   for (size_t v = 0; v < nV; v++) {
     regions.centroid[regions.label[v]] += geometry.vertexDualAreas[v] * geometry.vertexPositions[v];
@@ -116,12 +115,6 @@ Regions assignRegions(Surface& surface, const std::vector<std::vector<SurfacePoi
   }
   for (size_t r = 0; r < regions.count; r++)
     if (regions.area[r] > 0) regions.centroid[r] /= regions.area[r];
-  for (size_t v = 0; v < nV; v++) {
-    uint32_t r = regions.label[v];
-    regions.radius[r] += geometry.vertexDualAreas[v] * norm(geometry.vertexPositions[v] - regions.centroid[r]);
-  }
-  for (size_t r = 0; r < regions.count; r++)
-    if (regions.area[r] > 0) regions.radius[r] /= regions.area[r];
 
   for (Face f : mesh.faces()) {
     std::array<size_t, 3> l;

@@ -1,0 +1,417 @@
+// `npm run bench`: CSCD Studio against the skeletonisers people use instead, timed alike and scored by
+// the same code (bench/README.md says what every column means and why the comparison is fair).
+//
+//   npm run bench [-- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [folder...]]
+//
+// Meshes: every ../shared/data/meshes/*.ply (the quick subset with --quick), plus every .ply/.obj/.off
+// of the folders given; --meshes keeps only the named ones (with or without extension). For each mesh,
+// the methods run one after the other in a fixed order, each in its own process pinned to one core;
+// then each skeleton is read back and scored by core.evaluate. The table, a CSV and an SVG go to
+// bench/results/<date>[-quick][-N].{md,csv,svg} (rewritten after every mesh, so an interrupted run
+// keeps what it did); skeletons and logs to .deps/bench/runs/<same name>/.
+import { execFileSync, spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, readdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { parseArgs } from 'node:util';
+import { CoreError, loadCoreNode, type Evaluation, type MeshArrays } from '../lib/core/node.ts';
+import { parseMesh } from '../lib/io/index.ts';
+import { parseSkeleton, SkeletonFormatError } from '../lib/io/skeleton.ts';
+import { errorVsSecondsSvg } from './plot.ts';
+
+const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const sharedMeshes = path.resolve(repoRoot, '..', 'shared', 'data', 'meshes');
+const resultsDir = path.join(repoRoot, 'bench', 'results');
+
+/**
+ * Small meshes of genus 0, 1, 3 and 4 on which every method finishes in well under the quick timeout:
+ * LS is the slow one (5-60 s on these; hand.ply, 10k vertices, takes it about 170 s).
+ */
+const QUICK_MESHES = ['elephant_small', 'fertility_9k', 'spot', 'torus', 'wolf'];
+const MESH_EXTENSIONS = /\.(ply|obj|off)$/i; // what all four methods read
+const DEFAULT_TIMEOUT = { full: 600, quick: 180 };
+
+// ---------------------------------------------------------------------------------------------------
+// Methods: how each is run. Every runner prints {"seconds": S} as the last line of stdout.
+
+const METHODS = ['cscd', 'ls', 'msls', 'mcf'] as const;
+type Method = (typeof METHODS)[number];
+
+const venvPython = path.join(repoRoot, '.deps', 'bench-venv', 'bin', 'python');
+const RUNNERS: Record<Method, { ext: string; command: (mesh: string, out: string) => string[] }> = {
+  cscd: { ext: 'json', command: (mesh, out) => [process.execPath, '--import', 'tsx', 'bench/runners/cscd.ts', mesh, out] },
+  ls: { ext: 'obj', command: (mesh, out) => [venvPython, 'bench/runners/gel.py', 'ls', mesh, out] },
+  msls: { ext: 'obj', command: (mesh, out) => [venvPython, 'bench/runners/gel.py', 'msls', mesh, out] },
+  mcf: { ext: 'obj', command: (mesh, out) => [path.join(repoRoot, '.deps', 'bench', 'mcf'), mesh, out] },
+};
+
+/** One thread for every library that would start more (OpenMP in Eigen, BLAS under numpy). */
+const ONE_THREAD_ENV = {
+  OMP_NUM_THREADS: '1',
+  OPENBLAS_NUM_THREADS: '1',
+  MKL_NUM_THREADS: '1',
+  NUMEXPR_NUM_THREADS: '1',
+  VECLIB_MAXIMUM_THREADS: '1',
+};
+
+// ---------------------------------------------------------------------------------------------------
+// Command line
+
+/** An error the bench reports as one line, without a stack (bad usage, a missing piece). */
+class BenchError extends Error {}
+
+interface Config {
+  quick: boolean;
+  methods: Method[];
+  timeout: number;
+  meshes: string[];
+  folders: string[];
+  argv: string[];
+}
+
+function meshFiles(folder: string): string[] {
+  return readdirSync(folder).filter((f) => MESH_EXTENSIONS.test(f)).sort().map((f) => path.join(folder, f));
+}
+
+function parseCommandLine(argv: string[]): Config {
+  const { values, positionals } = parseArgs({
+    args: argv,
+    allowPositionals: true,
+    options: {
+      quick: { type: 'boolean', default: false },
+      methods: { type: 'string' },
+      meshes: { type: 'string' },
+      timeout: { type: 'string' },
+      help: { type: 'boolean', short: 'h', default: false },
+    },
+  });
+  if (values.help) {
+    process.stdout.write('usage: npm run bench -- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [folder...]\n');
+    process.exit(0);
+  }
+  const quick = values.quick === true;
+  const list = (text: string | undefined) => (text ?? '').split(',').map((s) => s.trim()).filter(Boolean);
+
+  const asked = list(values.methods);
+  const unknown = asked.filter((m) => !(METHODS as readonly string[]).includes(m));
+  if (unknown.length) throw new BenchError(`unknown method(s) ${unknown.join(', ')}: choose from ${METHODS.join(', ')}`);
+  // Always the fixed order, whatever order they were given in.
+  const methods = asked.length ? METHODS.filter((m) => asked.includes(m)) : [...METHODS];
+
+  const timeout = values.timeout === undefined ? DEFAULT_TIMEOUT[quick ? 'quick' : 'full'] : Number(values.timeout);
+  if (!(timeout > 0)) throw new BenchError(`--timeout must be a positive number of seconds, got '${values.timeout}'`);
+
+  for (const folder of positionals) {
+    if (!existsSync(folder) || !statSync(folder).isDirectory()) throw new BenchError(`'${folder}' is not a folder`);
+  }
+  if (!existsSync(sharedMeshes)) throw new BenchError(`the shared meshes are not at ${sharedMeshes}`);
+
+  const names = list(values.meshes);
+  const stem = (file: string) => path.basename(file).replace(MESH_EXTENSIONS, '');
+  const shared = meshFiles(sharedMeshes).filter((f) => names.length > 0 || !quick || QUICK_MESHES.includes(stem(f)));
+  let meshes = [...shared, ...positionals.flatMap((folder) => meshFiles(path.resolve(folder)))];
+  if (names.length) {
+    const missing = names.filter((n) => !meshes.some((f) => path.basename(f) === n || stem(f) === n));
+    if (missing.length) throw new BenchError(`no mesh named ${missing.join(', ')} in ${[sharedMeshes, ...positionals].join(', ')}`);
+    meshes = meshes.filter((f) => names.includes(path.basename(f)) || names.includes(stem(f)));
+  }
+  if (!meshes.length) throw new BenchError('no meshes to run on');
+  return { quick, methods, timeout, meshes, folders: positionals, argv };
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Running one method on one mesh
+
+interface Run {
+  status: 'ok' | 'timeout' | 'failed';
+  seconds: number | null;
+  /** Why it failed, one short line. */
+  reason: string;
+  file: string;
+}
+
+/** The line of a failed process's stderr that says why: the last that is not a stack frame or Node's version. */
+function reasonOf(stderr: string): string {
+  const lines = stderr.split('\n').map((l) => l.trim()).filter((l) => l && !/^at\s/.test(l) && !/^Node\.js v/.test(l));
+  const line = lines[lines.length - 1] ?? '';
+  return line.length > 100 ? `${line.slice(0, 97)}...` : line;
+}
+
+function runMethod(method: Method, mesh: string, runDir: string, label: string, timeout: number): Run {
+  const file = path.join(runDir, `${label}.${method}.${RUNNERS[method].ext}`);
+  const command = ['taskset', '-c', '0', ...RUNNERS[method].command(mesh, file)];
+  const result = spawnSync(command[0], command.slice(1), {
+    cwd: repoRoot,
+    env: { ...process.env, ...ONE_THREAD_ENV },
+    encoding: 'utf8',
+    timeout: timeout * 1000,
+    killSignal: 'SIGKILL',
+    maxBuffer: 1 << 28,
+  });
+  writeFileSync(path.join(runDir, `${label}.${method}.log`),
+    `$ ${command.join(' ')}\n--- stdout\n${result.stdout ?? ''}\n--- stderr\n${result.stderr ?? ''}`);
+
+  const failed = (reason: string): Run => ({ status: 'failed', seconds: null, reason, file });
+  if ((result.error as NodeJS.ErrnoException | undefined)?.code === 'ETIMEDOUT') return { status: 'timeout', seconds: null, reason: '', file };
+  if (result.error) return failed(result.error.message);
+  if (result.status !== 0) {
+    const why = reasonOf(result.stderr);
+    return failed(result.signal ? `${why ? `${why}, ` : ''}killed by ${result.signal}` : why || `exit code ${result.status}`);
+  }
+  const last = result.stdout.trim().split('\n').pop() ?? '';
+  try {
+    const seconds = (JSON.parse(last) as { seconds?: unknown }).seconds;
+    if (typeof seconds === 'number' && Number.isFinite(seconds)) return { status: 'ok', seconds, reason: '', file };
+  } catch {
+    // Not JSON: reported below.
+  }
+  return failed('no {"seconds": S} line on stdout');
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Scoring
+
+/** What the table keeps of an Evaluation (not its per-vertex arrays and surface, which are large). */
+type Figures = Pick<Evaluation, 'reconError' | 'median' | 'p95' | 'nodes' | 'cycles'>;
+
+type Score = { ok: true; evaluation: Figures } | { ok: false; reason: string; nodes: number | null };
+
+function describe(error: unknown): string {
+  const text = error instanceof Error ? (error instanceof CoreError || error instanceof BenchError ? error.message : `${error.name}: ${error.message}`) : String(error);
+  return text.split('\n')[0];
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Output
+
+interface Row {
+  mesh: string;
+  vertices: number | null;
+  genus: number | null;
+  method: Method;
+  run: Run;
+  score: Score | null;
+}
+
+const num = (x: number) => String(Number(x.toPrecision(3)));
+const cell = (text: string) => text.replace(/\|/g, '\\|');
+
+function runCell(run: Run, timeout: number): string {
+  if (run.status === 'timeout') return `timeout (> ${timeout} s)`;
+  if (run.status === 'failed') return `failed: ${run.reason}`;
+  return (run.seconds as number).toFixed(2);
+}
+
+/** cscd's seconds over msls's on the same mesh, or null when either has none. */
+function ratio(rows: Row[], mesh: string): number | null {
+  const seconds = (m: Method) => rows.find((r) => r.mesh === mesh && r.method === m)?.run.seconds ?? null;
+  const cscd = seconds('cscd'), msls = seconds('msls');
+  return cscd !== null && msls !== null && msls > 0 ? cscd / msls : null;
+}
+
+function median(values: number[]): number | null {
+  if (!values.length) return null;
+  const sorted = [...values].sort((a, b) => a - b);
+  const mid = sorted.length >> 1;
+  return sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
+}
+
+function markdown(rows: Row[], config: Config, machine: string, meshesDone: number): string {
+  const withRatio = config.methods.includes('cscd') && config.methods.includes('msls');
+  const lines: string[] = [
+    `# Curve-skeleton bench: ${config.methods.join(', ')}`,
+    '',
+    machine,
+    '',
+    `Options: \`npm run bench${config.argv.length ? ` -- ${config.argv.join(' ')}` : ''}\`; methods ${config.methods.join(', ')}; `
+      + `${config.meshes.length} meshes${config.quick ? ' (quick)' : ''}; timeout ${config.timeout} s per method and mesh.`
+      + (meshesDone < config.meshes.length ? ` **Partial: ${meshesDone} of ${config.meshes.length} meshes done.**` : ''),
+    '',
+    'Every method ran in its own process pinned to one core (`taskset -c 0`, `OMP_NUM_THREADS=1` and the like), '
+      + 'the methods one after the other for each mesh in the order cscd, ls, msls, mcf, so that drift of the machine affects them alike. '
+      + 'Seconds: wall time of the skeletonisation alone, as each runner measures it (cscd: `openSurface` + `skeleton`; ls/msls: '
+      + '`graph.from_mesh` + `LS_skeleton`/`MSLS_skeleton`; mcf: `extract_mean_curvature_flow_skeleton`), reading and writing files excluded. '
+      + 'Every skeleton was read back with `parseSkeleton` and scored by the same `core.evaluate` with **radii: null for every method**, '
+      + 'so the radii of the reconstruction are derived from the mesh by one rule for all (CSCD\'s own radii are not used). '
+      + 'Error: the reconstruction error in the paper\'s unit (squared distance from the mesh vertices to the reconstructed surface, '
+      + 'mesh scaled to unit bounding-box diagonal, ×1e3), mean, median and 95th percentile over the vertices. '
+      + 'Cycles: independent cycles of the skeleton graph, against the genus of the mesh (`core.inspect`). '
+      + (withRatio ? 'cscd / msls: cscd\'s seconds over msls\'s on the same mesh (below 1: cscd is faster).' : ''),
+    '',
+    `| mesh | V | method | seconds | nodes | cycles / genus | error ×1e3 | median ×1e3 | p95 ×1e3 |${withRatio ? ' cscd / msls |' : ''}`,
+    `| --- | ---: | --- | ---: | ---: | :---: | ---: | ---: | ---: |${withRatio ? ' ---: |' : ''}`,
+  ];
+  for (const row of rows) {
+    const genus = row.genus === null ? 'n/a' : String(row.genus);
+    let nodes = '', cycles = '', error = '', med = '', p95 = '';
+    if (row.score?.ok) {
+      const e = row.score.evaluation;
+      nodes = String(e.nodes);
+      cycles = `${e.cycles} / ${genus}`;
+      [error, med, p95] = [num(e.reconError), num(e.median), num(e.p95)];
+    } else if (row.score) {
+      nodes = row.score.nodes === null ? '' : String(row.score.nodes);
+      error = `scoring failed: ${row.score.reason}`;
+    }
+    const r = row.method === 'cscd' ? ratio(rows, row.mesh) : null;
+    lines.push(`| ${cell(row.mesh)} | ${row.vertices ?? ''} | ${row.method} | ${cell(runCell(row.run, config.timeout))} | ${nodes} | ${cycles} `
+      + `| ${cell(error)} | ${med} | ${p95} |${withRatio ? ` ${r === null ? '' : r.toFixed(2)} |` : ''}`);
+  }
+
+  lines.push('', 'Per method: meshes with a skeleton, timeouts and failures; median seconds and median error over the meshes it finished; '
+    + 'meshes where cycles = genus.', '',
+  '| method | done | timeout | failed | median seconds | median error ×1e3 | cycles = genus |',
+  '| --- | ---: | ---: | ---: | ---: | ---: | ---: |');
+  for (const method of config.methods) {
+    const mine = rows.filter((r) => r.method === method);
+    const scored = mine.flatMap((r) => (r.score?.ok ? [{ row: r, e: r.score.evaluation }] : []));
+    const medSeconds = median(mine.flatMap((r) => (r.run.seconds === null ? [] : [r.run.seconds])));
+    const medError = median(scored.map((s) => s.e.reconError));
+    lines.push(`| ${method} | ${mine.filter((r) => r.run.status === 'ok').length} | ${mine.filter((r) => r.run.status === 'timeout').length} `
+      + `| ${mine.filter((r) => r.run.status === 'failed').length} | ${medSeconds === null ? '' : medSeconds.toFixed(2)} `
+      + `| ${medError === null ? '' : num(medError)} | ${scored.filter((s) => s.e.cycles === s.row.genus).length} of ${scored.length} |`);
+  }
+  const ratios = [...new Set(rows.map((r) => r.mesh))].flatMap((mesh) => ratio(rows, mesh) ?? []);
+  if (withRatio && ratios.length) {
+    lines.push('', `cscd / msls time: median ${median(ratios)?.toFixed(2)} over ${ratios.length} meshes (from ${Math.min(...ratios).toFixed(2)} to ${Math.max(...ratios).toFixed(2)}).`);
+  }
+  return `${lines.join('\n')}\n`;
+}
+
+function csv(rows: Row[]): string {
+  const quote = (v: string | number | null) => (v === null ? '' : typeof v === 'number' ? String(v) : /[",\n]/.test(v) ? `"${v.replace(/"/g, '""')}"` : v);
+  const lines = ['mesh,vertices,genus,method,status,reason,seconds,nodes,cycles,recon_error,median,p95,cscd_over_msls'];
+  for (const row of rows) {
+    const e = row.score?.ok ? row.score.evaluation : null;
+    const reason = row.run.reason || (row.score && !row.score.ok ? `scoring failed: ${row.score.reason}` : '');
+    lines.push([row.mesh, row.vertices, row.genus, row.method, row.run.status, reason, row.run.seconds,
+      e ? e.nodes : row.score && !row.score.ok ? row.score.nodes : null, e?.cycles ?? null, e?.reconError ?? null, e?.median ?? null, e?.p95 ?? null,
+      row.method === 'cscd' ? ratio(rows, row.mesh) : null].map(quote).join(','));
+  }
+  return `${lines.join('\n')}\n`;
+}
+
+/** bench/results/<date>[-quick], then -2, -3... until no file of the run's three exists. */
+function runName(quick: boolean): string {
+  const base = `${new Date().toISOString().slice(0, 10)}${quick ? '-quick' : ''}`;
+  const taken = (name: string) => ['md', 'csv', 'svg'].some((ext) => existsSync(path.join(resultsDir, `${name}.${ext}`)));
+  let name = base;
+  for (let k = 2; taken(name); k++) name = `${base}-${k}`;
+  return name;
+}
+
+function shell(command: string, args: string[]): string {
+  try {
+    return execFileSync(command, args, { cwd: repoRoot, encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }).trim();
+  } catch {
+    return 'unknown';
+  }
+}
+
+function describeMachine(methods: Method[]): string {
+  const cpu = /model name\s*:\s*(.*)/.exec(readFileSync('/proc/cpuinfo', 'utf8'))?.[1] ?? 'unknown CPU';
+  const gel = methods.includes('ls') || methods.includes('msls');
+  const python = shell(gel ? venvPython : 'python3', ['--version']).replace(/^Python /, '');
+  const pygel = gel ? shell(venvPython, ['-c', 'from importlib.metadata import version; print(version("PyGEL3D"))']) : 'not used';
+  const cgal = methods.includes('mcf') ? shell('dpkg-query', ['-W', '-f=${Version}', 'libcgal-dev']) : 'not used';
+  const commit = shell('git', ['rev-parse', '--short', 'HEAD']);
+  const dirty = shell('git', ['status', '--porcelain']) !== '';
+  const load = os.loadavg().map((x) => x.toFixed(2)).join(' ');
+  return `Run on ${new Date().toISOString().replace(/\.\d+Z$/, 'Z')}, commit ${commit}${dirty ? ' (with uncommitted changes in the work tree)' : ''}. `
+      + `Machine: ${shell('nproc', [])} cores (nproc), ${cpu}; Node ${process.version}, Python ${python}, pygel3d ${pygel}, `
+      + `CGAL ${cgal === 'unknown' || cgal === 'not used' ? cgal : `${cgal.replace(/-[^-]*$/, '')} (Debian libcgal-dev ${cgal})`}; load average ${load} at the start (times compare best on an idle machine).`;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Main
+
+function prepare(methods: Method[]): void {
+  const steps: [string, string[]][] = [['bash', ['scripts/build-wasm.sh']]];
+  const baselines = methods.filter((m) => m !== 'cscd');
+  if (baselines.length) steps.push(['bash', ['bench/setup.sh', ...baselines]]);
+  for (const [command, args] of steps) {
+    process.stdout.write(`bench: ${command} ${args.join(' ')}\n`);
+    const result = spawnSync(command, args, { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
+    if (result.status !== 0) throw new BenchError(`${args[0]} failed (exit code ${result.status ?? result.signal})`);
+  }
+}
+
+async function main(): Promise<void> {
+  const config = parseCommandLine(process.argv.slice(2));
+  prepare(config.methods);
+  const machine = describeMachine(config.methods);
+  const name = runName(config.quick);
+  const runDir = path.join(repoRoot, '.deps', 'bench', 'runs', name);
+  mkdirSync(runDir, { recursive: true });
+  mkdirSync(resultsDir, { recursive: true });
+  const out = path.join(resultsDir, name);
+  process.stdout.write(`bench: ${config.meshes.length} meshes × ${config.methods.join(', ')}; results in ${path.relative(repoRoot, out)}.{md,csv,svg}, `
+    + `skeletons and logs in ${path.relative(repoRoot, runDir)}/\n`);
+
+  // Labels: file names, with the folder in front when two folders hold the same name.
+  const labels = config.meshes.map((file, _, all) => {
+    const base = path.basename(file);
+    return all.filter((f) => path.basename(f) === base).length > 1 ? `${path.basename(path.dirname(file))}/${base}` : base;
+  });
+
+  let core = await loadCoreNode();
+  const rows: Row[] = [];
+  for (let i = 0; i < config.meshes.length; i++) {
+    const file = config.meshes[i];
+    const label = labels[i];
+    const fileLabel = label.replace(/[/\\]/g, '_');
+    let mesh: MeshArrays | null = null;
+    let vertices: number | null = null;
+    let genus: number | null = null;
+    let meshError = '';
+    try {
+      mesh = parseMesh(readFileSync(file), file);
+      const facts = core.inspect(mesh);
+      [vertices, genus] = [facts.vertices, facts.genus];
+    } catch (error) {
+      meshError = `mesh unreadable: ${describe(error)}`;
+    }
+    process.stdout.write(`[${i + 1}/${config.meshes.length}] ${label} (V ${vertices ?? '?'}, genus ${genus ?? 'n/a'})\n`);
+
+    const mine: Row[] = [];
+    for (const method of config.methods) {
+      const run = mesh ? runMethod(method, file, runDir, fileLabel, config.timeout) : { status: 'failed' as const, seconds: null, reason: meshError, file: '' };
+      process.stdout.write(`  ${method.padEnd(5)} ${runCell(run, config.timeout)}${run.status === 'ok' ? ' s' : ''}\n`);
+      mine.push({ mesh: label, vertices, genus, method, run, score: null });
+    }
+
+    for (const row of mine) {
+      if (row.run.status !== 'ok' || !mesh) continue;
+      const started = performance.now();
+      let nodes: number | null = null;
+      try {
+        const skeleton = parseSkeleton(readFileSync(row.run.file), row.run.file);
+        nodes = skeleton.nodes.length / 3;
+        // radii: null for every method: one rule derives them from the mesh, whatever the method reports.
+        const { reconError, median, p95, nodes: count, cycles } = core.evaluate(mesh, { nodes: skeleton.nodes, edges: skeleton.edges, radii: null });
+        row.score = { ok: true, evaluation: { reconError, median, p95, nodes: count, cycles } };
+      } catch (error) {
+        row.score = { ok: false, reason: describe(error), nodes };
+        // A WASM trap (not an error about the input) may leave the module unusable: start a fresh one.
+        if (!(error instanceof CoreError || error instanceof SkeletonFormatError)) core = await loadCoreNode();
+      }
+      const took = ((performance.now() - started) / 1000).toFixed(1);
+      process.stdout.write(`  scored ${row.method.padEnd(5)} ${row.score.ok ? `error ${num(row.score.evaluation.reconError)}, ${row.score.evaluation.nodes} nodes, `
+        + `${row.score.evaluation.cycles} cycles` : `failed: ${row.score.reason}`} (${took} s)\n`);
+    }
+    rows.push(...mine);
+
+    writeFileSync(`${out}.md`, markdown(rows, config, machine, i + 1));
+    writeFileSync(`${out}.csv`, csv(rows));
+    const points = rows.flatMap((r) => (r.score?.ok && r.run.seconds !== null
+      ? [{ method: r.method, mesh: r.mesh, seconds: r.run.seconds, error: r.score.evaluation.reconError }] : []));
+    writeFileSync(`${out}.svg`, errorVsSecondsSvg(points, config.methods, `Reconstruction error against time, ${name}`));
+  }
+  process.stdout.write(`bench: done; ${path.relative(repoRoot, out)}.md\n`);
+}
+
+main().catch((error: unknown) => {
+  process.stderr.write(`bench: ${describe(error)}\n`);
+  process.exit(1);
+});

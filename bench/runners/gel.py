@@ -1,0 +1,62 @@
+"""Baselines `ls` and `msls` of the bench: Local Separators (Baerentzen & Rotenberg 2021) and Multi-Scale
+Local Separators from PyGEL (pygel3d 0.8.2), with the defaults the authors document.
+
+    python gel.py ls|msls <mesh.ply|.obj|.off> <skeleton.obj>
+
+Writes the skeleton as OBJ (`v x y z` per node, `l i j` per edge, 1-based) and prints, as the last line
+of stdout, {"seconds": S}: the wall time of building the mesh's edge graph and skeletonising it
+(reading and writing excluded).
+"""
+import json
+import os
+import sys
+import time
+
+from pygel3d import graph, hmesh
+
+SKELETONISERS = {
+    # sampling=True (the default): separators are grown from a sample of the vertices, not all of them.
+    "ls": lambda g: graph.LS_skeleton(g),
+    # grow_thresh=64 (the default).
+    "msls": lambda g: graph.MSLS_skeleton(g),
+}
+
+
+def main() -> int:
+    if len(sys.argv) != 4 or sys.argv[1] not in SKELETONISERS:
+        print("usage: gel.py ls|msls <mesh> <skeleton.obj>", file=sys.stderr)
+        return 2
+    method, mesh_path, out_path = sys.argv[1:]
+
+    # GEL reports its progress on stdout from C++; send all of it to stderr so that our JSON stays the
+    # last line of stdout whatever the C and C++ runtimes flush at exit.
+    result_out = os.fdopen(os.dup(1), "w")
+    os.dup2(2, 1)
+
+    mesh = hmesh.load(mesh_path)
+    if mesh is None:
+        print(f"gel: cannot read {mesh_path}", file=sys.stderr)
+        return 1
+
+    started = time.perf_counter()
+    skeleton = SKELETONISERS[method](graph.from_mesh(mesh))
+    seconds = time.perf_counter() - started
+
+    skeleton.cleanup()  # node indices 0..n-1 without gaps
+    positions = skeleton.positions()
+    with open(out_path, "w") as out:
+        out.write(f"# PyGEL {method.upper()} skeleton of {mesh_path}\n")
+        for x, y, z in positions:
+            out.write(f"v {float(x)!r} {float(y)!r} {float(z)!r}\n")
+        for n in skeleton.nodes():
+            for m in skeleton.neighbors(n):
+                if n < m:
+                    out.write(f"l {n + 1} {m + 1}\n")
+
+    result_out.write(json.dumps({"seconds": seconds}) + "\n")
+    result_out.flush()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -6,7 +6,7 @@
  *
  * The steps, in order:
  * 1. weld vertices closer than WELD_TOLERANCE x the bounding-box diagonal (each joins the first
- *    earlier vertex in reach, whose position is kept);
+ *    earlier vertex in reach, whose position is kept; the box is that of the vertices in faces);
  * 2. remove degenerate faces: a repeated vertex, or zero area by the core's test (mesh_check.cpp);
  * 3. remove duplicate faces (the same three vertices as an earlier face, in any order);
  * 4. split non-manifold edges: of the faces on an edge, the first pair running along it in opposite
@@ -53,7 +53,7 @@ export function repairMesh<P extends MeshArrays['positions']>(mesh: { positions:
   if (!Number.isInteger(nV) || mesh.triangles.length % 3 !== 0) return unchanged();
   for (const v of mesh.triangles) if (v >= nV) return unchanged();
   for (const v of mesh.triangles) {
-    if (!Number.isFinite(positions[3 * v] + positions[3 * v + 1] + positions[3 * v + 2])) return unchanged();
+    if (!Number.isFinite(positions[3 * v]) || !Number.isFinite(positions[3 * v + 1]) || !Number.isFinite(positions[3 * v + 2])) return unchanged();
   }
 
   const repairs: string[] = [];
@@ -95,7 +95,8 @@ export function repairMesh<P extends MeshArrays['positions']>(mesh: { positions:
     if (mode === 'keep-pair') ({ nonManifold, pointVertices, pointCopies } = split);
     edgeCopies += split.edgeCopies;
     if (split.copyOf.length === 0) continue;
-    origin.push(...split.copyOf);
+    // The second pass may copy a copy: record the input vertex.
+    for (const v of split.copyOf) origin.push(v < nV ? v : origin[v - nV]);
     vertexCount += split.copyOf.length;
     edges = buildEdges(tri, vertexCount);
   }
@@ -170,9 +171,10 @@ function boundingBoxDiagonal(pos: Float64Array, tri: Uint32Array): number {
 }
 
 /**
- * Welds every vertex used by a face to the first earlier such vertex within `tolerance` (on a grid of
- * cells that size, so only the cells near a vertex are searched). Unused vertices are left to
- * the final compaction. Returns the target of every vertex and how many were welded.
+ * Welds every vertex used by a face to the lowest-numbered earlier one within `tolerance` that was not
+ * welded itself (so no chains form), found on a grid: only the cells near a vertex are searched.
+ * Unused vertices are left to the final compaction. Returns the target of every vertex and how many
+ * were welded.
  */
 function weld(pos: Float64Array, tri: Uint32Array, nV: number, tolerance: number): { to: Int32Array; count: number } {
   const to = identity(nV);

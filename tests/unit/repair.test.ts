@@ -23,6 +23,12 @@ function expectClean(m: MeshArrays) {
   return facts;
 }
 
+/** Each face as the sorted corner positions: what splits and flips must not change. */
+function faceCorners(m: MeshArrays): string[] {
+  return Array.from({ length: m.triangles.length / 3 }, (_, f) =>
+    [0, 1, 2].map((k) => Array.from(m.positions.subarray(3 * m.triangles[3 * f + k], 3 * m.triangles[3 * f + k] + 3)).join(' ')).sort().join(' | '));
+}
+
 function flipped(m: MeshArrays, faces: number[]): MeshArrays {
   const triangles = m.triangles.slice();
   for (const f of faces) [triangles[3 * f + 1], triangles[3 * f + 2]] = [triangles[3 * f + 2], triangles[3 * f + 1]];
@@ -155,6 +161,17 @@ describe('repairs', () => {
     const apart = repairMesh(interleaved);
     expect(apart.repairs).toEqual(['split 1 non-manifold edge (more than two faces on an edge) into 2 edges with 2 copied vertices']);
     expect(expectClean(apart.mesh)).toMatchObject({ vertices: 8, components: 2, boundaryLoops: 0, genus: 0 });
+
+    // A third tetrahedron touching vertex 0 and listed first keeps vertex 0, so the first pass moves
+    // the pair onto a copy and the second pass copies that copy: every copy sits where its vertex was.
+    const touching = TET_TRIANGLES.map((v) => (v === 0 ? 0 : v + 5)).map((v, i, t) => (i % 3 === 1 ? t[i + 1] : i % 3 === 2 ? t[i - 1] : v));
+    const moved = (p: number[]) => p.map((x, i) => x + [1, 2, 3][i % 3]);
+    const three = mesh(moved([...interleaved.positions, ...TET_POSITIONS.slice(3).map((x) => -2 * x)]), [...touching, ...interleaved.triangles]);
+    const result3 = repairMesh(three);
+    // Vertex 0 is an end of the cut edge, so its third copy is counted with the edge.
+    expect(result3.repairs).toEqual(['split 1 non-manifold edge (more than two faces on an edge) into 2 edges with 3 copied vertices']);
+    expect(expectClean(result3.mesh)).toMatchObject({ vertices: 12, components: 3, boundaryLoops: 0, genus: 0 });
+    expect(faceCorners(result3.mesh)).toEqual(faceCorners(three));
   });
 
   it('removes degenerate and duplicate faces and unreferenced vertices, and maps the vertices', () => {

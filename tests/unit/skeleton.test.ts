@@ -24,11 +24,29 @@ function closedConnectedMeshes(): { file: string; genus: number }[] {
 const point = (flat: ArrayLike<number>, i: number) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]];
 const distance3 = (a: number[], b: number[]) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 
-function components(nodeCount: number, edges: Uint32Array): number {
+/** The connected component of every node (its smallest node index). */
+function componentOf(nodeCount: number, edges: Uint32Array): number[] {
   const parent = Array.from({ length: nodeCount }, (_, i) => i);
   const find = (x: number): number => (parent[x] === x ? x : (parent[x] = find(parent[x])));
-  for (let i = 0; i < edges.length; i += 2) parent[find(edges[i])] = find(edges[i + 1]);
-  return parent.filter((_, i) => find(i) === i).length;
+  for (let i = 0; i < edges.length; i += 2) {
+    const [a, b] = [find(edges[i]), find(edges[i + 1])];
+    parent[Math.max(a, b)] = Math.min(a, b);
+  }
+  return parent.map((_, i) => find(i));
+}
+
+function components(nodeCount: number, edges: Uint32Array): number {
+  return new Set(componentOf(nodeCount, edges)).size;
+}
+
+/** The skeleton of a shared mesh with the default options. */
+function skeletonOf(file: string): Skeleton {
+  const surface = core.openSurface(readMesh(sharedMesh(file)));
+  try {
+    return surface.skeleton({});
+  } finally {
+    surface.dispose();
+  }
 }
 
 function leaves(skeleton: Skeleton): number[] {
@@ -94,6 +112,33 @@ describe('skeleton shape and bookkeeping', () => {
       const [x, y, z] = point(skeleton.nodes, i);
       expect(Math.hypot(Math.hypot(x, y) - 1, z), `node ${i} off the core circle`).toBeLessThan(0.01);
       expect(skeleton.radii[i]).toBeCloseTo(0.3, 2);
+    }
+  });
+
+  it('gives one piece per connected component: three rings of one cycle each, the seven shells of a CAD part', () => {
+    const rings = skeletonOf('rings.ply');
+    const ringOf = componentOf(rings.radii.length, rings.edges);
+    const pieces = [...new Set(ringOf)];
+    expect(pieces).toHaveLength(3);
+    for (const piece of pieces) {
+      const nodes = ringOf.filter((c) => c === piece).length;
+      let edges = 0;
+      for (let i = 0; i < rings.edges.length; i += 2) if (ringOf[rings.edges[i]] === piece) edges++;
+      expect(edges - nodes + 1, 'cycles of one ring').toBe(1);
+    }
+    const cup = skeletonOf('thingi10k_37361_linkCupBase.ply');
+    expect(components(cup.radii.length, cup.edges)).toBe(7);
+    expect(cup.stats.cycles).toBe(0);
+  });
+
+  it('follows the ring of a torus with holes: one loop, no branches, on the core circle', () => {
+    // torus_two_holes_open: ring radius 1 around z, tube radius 0.4, three small holes (MANIFEST.md).
+    const skeleton = skeletonOf('torus_two_holes_open.ply');
+    expect(skeleton.stats.cycles).toBe(1);
+    expect(leaves(skeleton)).toEqual([]);
+    for (let i = 0; i < skeleton.radii.length; i++) {
+      const [x, y, z] = point(skeleton.nodes, i);
+      expect(Math.hypot(Math.hypot(x, y) - 1, z), `node ${i} off the core circle`).toBeLessThan(0.05);
     }
   });
 

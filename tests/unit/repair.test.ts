@@ -5,6 +5,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core, type MeshArrays } from '../../lib/core/node.ts';
 import { MeshFormatError } from '../../lib/io/index.ts';
 import { repairMesh } from '../../lib/io/repair.ts';
+import { random } from '../../lib/core/random.ts';
 import { sharedData, sharedMesh } from '../paths.ts';
 import { TETRAHEDRON, capsule, icosphere, meshOf as mesh, readMesh, torus } from './support/meshes.ts';
 
@@ -195,6 +196,32 @@ describe('repairs', () => {
     const collinear = mesh([0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0], [0, 1, 2, 1, 2, 3]);
     expect(() => repairMesh(collinear)).toThrow(MeshFormatError);
     expect(() => repairMesh(collinear)).toThrow('all 2 faces are degenerate (zero area or a repeated vertex): there is no surface left');
+  });
+
+  it('turns random triangle soups into manifold meshes or refuses them', () => {
+    // Few vertices on a coarse grid: duplicates, collinear points, fins and bow-ties are common.
+    const next = random(7);
+    let oriented = 0;
+    const trials = 500;
+    for (let trial = 0; trial < trials; trial++) {
+      const nV = 3 + Math.floor(next() * 10), nF = 1 + Math.floor(next() * 25);
+      const soup = mesh(Array.from({ length: 3 * nV }, () => Math.floor(next() * 3)), Array.from({ length: 3 * nF }, () => Math.floor(next() * nV)));
+      let result;
+      try {
+        result = repairMesh(soup);
+      } catch (error) {
+        expect(error).toBeInstanceOf(MeshFormatError);
+        continue;
+      }
+      const facts = core.inspect(result.mesh);
+      expect(facts, JSON.stringify(Array.from(soup.triangles))).toMatchObject({ manifold: true, degenerateFaces: 0, unreferencedVertices: 0 });
+      // Faces only go away or flip; their corners stay where they were.
+      const before = new Set(faceCorners(soup));
+      expect(faceCorners(result.mesh).every((corners) => before.has(corners))).toBe(true);
+      // Some soups make one-sided surfaces (Moebius-like), which no flip can orient; most are two-sided.
+      if (facts.consistentlyOriented) oriented++;
+    }
+    expect(oriented).toBeGreaterThan(0.8 * trials);
   });
 
   it('leaves what it cannot mend to the core: a Moebius strip, non-finite coordinates', () => {

@@ -115,7 +115,7 @@ test('a malformed file shows an error and keeps the previous mesh working', asyn
   await expect(page.getByRole('alert')).toBeHidden();
 });
 
-test('a non-manifold mesh is shown with its facts and refuses stage 1 with a message', async ({ page }) => {
+test('a non-manifold mesh is repaired on load, says so, and stage 1 runs on it', async ({ page }) => {
   const before = await openSample(page);
   // Three sheets sharing the edge x = z = 0 (a non-manifold edge), each a 2x2 grid of quads.
   const lines: string[] = [];
@@ -129,16 +129,64 @@ test('a non-manifold mesh is shown with its facts and refuses stage 1 with a mes
   await dropFile(page, 'fins.obj', new TextEncoder().encode(lines.join('\n') + '\n'));
   await expect(page.getByTestId('file-name')).toHaveText('fins.obj');
   await waitForState(page, 'ready');
-  await expect(page.getByTestId('facts-manifold')).toContainText('no');
+  // The shared edge is split (lib/io/repair.ts): a manifold mesh, and the notes say what was done.
+  await expect(page.getByTestId('facts-manifold')).toHaveText('yes');
+  await expect(page.getByTestId('warnings')).toContainText('Repaired:');
   const shown = await canvasStats(page);
   expect(frameDifference(before, shown), 'the new mesh is drawn').toBeGreaterThan(15);
 
   await clickMesh(page, shown);
-  await waitForState(page, 'error');
-  await expect(page.getByRole('alert')).toContainText('Could not compute stage 1');
-  await expect(page.getByRole('alert')).toContainText('non-manifold');
-  await expect(page.getByTestId('separator')).toBeHidden();
+  await expect(page.locator('body')).toHaveAttribute('data-separator-runs', '1', { timeout: 30_000 });
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('separator-status')).toHaveAttribute('data-status', /.+/);
+  await expect(page.getByRole('alert')).toBeHidden();
   await expect(page.getByTestId('file-name')).toHaveText('fins.obj');
+});
+
+/** A GLB file of an octahedron (one node, translated) built here: 6 float32 VEC3 positions, 24 uint16 indices. */
+function octahedronGlb(): Uint8Array {
+  const positions = [1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1];
+  const indices = [0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5];
+  const bin = Buffer.alloc(72 + 48);
+  positions.forEach((x, i) => bin.writeFloatLE(x, 4 * i));
+  indices.forEach((x, i) => bin.writeUInt16LE(x, 72 + 2 * i));
+  const json = JSON.stringify({
+    asset: { version: '2.0' },
+    buffers: [{ byteLength: bin.length }],
+    bufferViews: [{ buffer: 0, byteOffset: 0, byteLength: 72 }, { buffer: 0, byteOffset: 72, byteLength: 48 }],
+    accessors: [
+      { bufferView: 0, componentType: 5126, count: 6, type: 'VEC3' },
+      { bufferView: 1, componentType: 5123, count: 24, type: 'SCALAR' },
+    ],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1 }] }],
+    nodes: [{ mesh: 0, translation: [0, 2, 0] }],
+    scenes: [{ nodes: [0] }],
+  });
+  const text = Buffer.from(json.padEnd(Math.ceil(json.length / 4) * 4, ' '));
+  const header = Buffer.alloc(12);
+  header.write('glTF', 0, 'latin1');
+  header.writeUInt32LE(2, 4);
+  header.writeUInt32LE(12 + 8 + text.length + 8 + bin.length, 8);
+  const chunk = (type: number, data: Buffer) => {
+    const h = Buffer.alloc(8);
+    h.writeUInt32LE(data.length, 0);
+    h.writeUInt32LE(type, 4);
+    return Buffer.concat([h, data]);
+  };
+  return new Uint8Array(Buffer.concat([header, chunk(0x4e4f534a, text), chunk(0x004e4942, bin)]));
+}
+
+test('dropping a GLB file opens its triangles', async ({ page }) => {
+  const before = await openSample(page);
+  await dropFile(page, 'octahedron.glb', octahedronGlb());
+  await expect(page.getByTestId('file-name')).toHaveText('octahedron.glb');
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('file-format')).toHaveText('GLB');
+  await expect(page.getByTestId('facts-vertices')).toHaveText('6');
+  await expect(page.getByTestId('facts-faces')).toHaveText('8');
+  await expect(page.getByTestId('facts-genus')).toHaveText('0');
+  await expect(page.getByTestId('facts-manifold')).toHaveText('yes');
+  expect(frameDifference(before, await canvasStats(page)), 'the octahedron is drawn').toBeGreaterThan(15);
 });
 
 for (const how of ['abort', 'uncaught'] as const) {

@@ -13,6 +13,16 @@ export interface Pick {
   point: THREE.Vector3;
 }
 
+/** Whether WebGL runs on a CPU rasterizer (SwiftShader, llvmpipe...), asked of a throwaway context. */
+function isSoftwareRenderer(): boolean {
+  const gl = document.createElement('canvas').getContext('webgl2');
+  if (!gl) return false;
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return /swiftshader|llvmpipe|software|softpipe/i.test(name);
+}
+
 /** Pointer travel (px) below which a press-release counts as a click rather than an orbit drag. */
 const CLICK_SLOP_PX = 5;
 
@@ -33,8 +43,11 @@ export class Viewer {
   private pointerDown: { x: number; y: number; id: number } | null = null;
 
   constructor(private readonly container: HTMLElement) {
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, alpha: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    // A software renderer (no GPU) draws on the CPU cores the worker computes on, and the page waits
+    // for each frame: there, no multisampling and one pixel per CSS pixel keep frames short.
+    const software = isSoftwareRenderer();
+    this.renderer = new THREE.WebGLRenderer({ antialias: !software, alpha: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio, 2));
     this.renderer.setClearColor(0x000000, 0); // the page background shows through
     this.renderer.outputColorSpace = THREE.SRGBColorSpace;
     const canvas = this.renderer.domElement;

@@ -7,7 +7,9 @@
  * The steps, in order:
  * 1. weld vertices closer than WELD_TOLERANCE x the bounding-box diagonal (each joins the first
  *    earlier vertex in reach, whose position is kept; the box is that of the vertices in faces);
- * 2. remove degenerate faces: a repeated vertex, or zero area by the core's test (mesh_check.cpp);
+ * 2. flip caps (zero-area faces with a corner on the opposite edge) with their neighbour into two
+ *    proper triangles, then remove the degenerate faces left: a repeated vertex, or zero area by the
+ *    core's test (mesh_check.cpp);
  * 3. remove duplicate faces (the same three vertices as an earlier face, in any order);
  * 4. split non-manifold edges: of the faces on an edge, the first pair running along it in opposite
  *    directions (else the first two) stays joined; the others are detached, not dropped, so no
@@ -70,6 +72,10 @@ export function repairMesh<P extends MeshArrays['positions']>(mesh: { positions:
     repairs.push(`welded ${count(welded.count, 'duplicate vertex', 'duplicate vertices')} (closer than ${WELD_TOLERANCE.toExponential()} of the bounding-box diagonal)`);
   }
 
+  const capsFlipped = flipCaps(pos, tri, nV);
+  if (capsFlipped > 0) {
+    repairs.push(`flipped ${count(capsFlipped, 'zero-area face', 'zero-area faces')} with ${capsFlipped === 1 ? 'its neighbour' : 'their neighbours'} into proper triangles (the same surface)`);
+  }
   const degenerate = removeFaces(tri, (f) => isDegenerate(pos, tri, f));
   if (degenerate.removed > 0) {
     tri = degenerate.tri;
@@ -243,6 +249,71 @@ function isDegenerate(pos: Float64Array, tri: Uint32Array, f: number): boolean {
   const twiceArea = Math.sqrt(nx * nx + ny * ny + nz * nz);
   const longest = Math.max(ux * ux + uy * uy + uz * uz, vx * vx + vy * vy + vz * vz, wx * wx + wy * wy + wz * wz);
   return twiceArea <= ZERO_AREA * longest;
+}
+
+/** Rounds of cap flips: a cap next to one flipped in this round waits for the next. */
+const CAP_ROUNDS = 4;
+
+/**
+ * A zero-area face with three distinct corners is a cap: one corner c lies on the opposite, longest
+ * edge ab. Flipping ab with the face (b, a, d) across it gives (c, a, d) and (b, c, d), which cover the
+ * same surface with proper triangles, where removing the cap would leave a slit. Done only where ab
+ * has just those two faces running along it in opposite directions and c-d is not an edge yet; the
+ * caps left are removed with the other degenerate faces. Flips faces in `tri` in place.
+ */
+function flipCaps(pos: Float64Array, tri: Uint32Array, nV: number): number {
+  const nF = tri.length / 3;
+  let flipped = 0;
+  for (let round = 0; round < CAP_ROUNDS; round++) {
+    const caps: number[] = [];
+    for (let f = 0; f < nF; f++) {
+      const a = tri[3 * f], b = tri[3 * f + 1], c = tri[3 * f + 2];
+      if (a !== b && b !== c && a !== c && isDegenerate(pos, tri, f)) caps.push(f);
+    }
+    if (caps.length === 0) break;
+    const { edgeOf, edgeStart, edgeCorners } = buildEdges(tri, nV);
+    const faces = facesAround(tri, nV);
+    const touched = new Uint8Array(nF);
+    const newEdges = new Set<string>(); // made this round, unknown to `faces`
+    const isEdge = (u: number, v: number) => newEdges.has(u < v ? `${u},${v}` : `${v},${u}`)
+      || faces.of(u).some((g) => tri[3 * g] === v || tri[3 * g + 1] === v || tri[3 * g + 2] === v);
+    let flippedNow = 0;
+    for (const f of caps) {
+      if (touched[f]) continue;
+      // The longest edge starts at corner k.
+      let k = 0, longest = -1;
+      for (let i = 0; i < 3; i++) {
+        const p = 3 * tri[3 * f + i], q = 3 * tri[3 * f + (i + 1) % 3];
+        const l = (pos[q] - pos[p]) ** 2 + (pos[q + 1] - pos[p + 1]) ** 2 + (pos[q + 2] - pos[p + 2]) ** 2;
+        if (l > longest) [k, longest] = [i, l];
+      }
+      const cab = 3 * f + k, e = edgeOf[cab];
+      if (edgeStart[e + 1] - edgeStart[e] !== 2) continue;
+      const other = edgeCorners[edgeStart[e]] === cab ? edgeCorners[edgeStart[e] + 1] : edgeCorners[edgeStart[e]];
+      const g = (other / 3) | 0;
+      const a = tri[cab], b = tri[next(cab)], c = tri[next(next(cab))], d = tri[next(next(other))];
+      if (touched[g] || tri[other] !== b || d === c || isEdge(c, d)) continue;
+      tri.set([c, a, d], 3 * f);
+      tri.set([b, c, d], 3 * g);
+      touched[f] = touched[g] = 1;
+      newEdges.add(c < d ? `${c},${d}` : `${d},${c}`);
+      flippedNow++;
+    }
+    flipped += flippedNow;
+    if (flippedNow === 0) break;
+  }
+  return flipped;
+}
+
+/** The faces around each vertex (a counting sort of the corners). */
+function facesAround(tri: Uint32Array, nV: number): { of(v: number): Int32Array } {
+  const start = new Int32Array(nV + 1);
+  for (let c = 0; c < tri.length; c++) start[tri[c] + 1]++;
+  for (let v = 0; v < nV; v++) start[v + 1] += start[v];
+  const fill = start.slice(0, nV);
+  const face = new Int32Array(tri.length);
+  for (let c = 0; c < tri.length; c++) face[fill[tri[c]]++] = (c / 3) | 0;
+  return { of: (v) => face.subarray(start[v], start[v + 1]) };
 }
 
 /** A test that is true for a face with the same vertex set as an earlier face (call in face order). */

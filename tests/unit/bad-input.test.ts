@@ -88,3 +88,25 @@ describe.each(cases)('%s', (file, e) => {
     expect(skeleton.nodes.flat().every(Number.isFinite)).toBe(true);
   });
 });
+
+describe('vertex numbering after a repair', () => {
+  it('cscd distance keeps the numbering of the file', () => {
+    // seams.obj: the cube with four vertices per quad; welded copies are one vertex, so one distance.
+    const seams = JSON.parse(run('distance', path.join(folder, 'seams.obj'), '--source', '0').stdout) as { distance: number[] };
+    expect(seams.distance).toHaveLength(24);
+    const lines = readFileSync(path.join(folder, 'seams.obj'), 'utf8').split('\n').filter((line) => line.startsWith('v '));
+    const atOrigin = lines.flatMap((line, i) => (line === 'v 0 0 0' ? [i] : []));
+    expect(atOrigin.length).toBeGreaterThan(1);
+    for (const v of atOrigin) expect(seams.distance[v]).toBe(0);
+
+    // nan_unused_vertex.obj: the fifth vertex is removed, so it has no distance and cannot be a source.
+    const unused = path.join(folder, 'nan_unused_vertex.obj');
+    const result = JSON.parse(run('distance', unused, '--source', '0').stdout) as { distance: (number | null)[] };
+    expect(result.distance).toHaveLength(5);
+    expect(result.distance[4]).toBeNull();
+    expect(result.distance.slice(0, 4).every((d) => typeof d === 'number')).toBe(true);
+    const removed = run('distance', unused, '--source', '4');
+    expect(removed.status).toBe(2);
+    expect(removed.stderr.trimEnd().split('\n').at(-1)).toBe('cscd: --source 4 is a vertex used by no face, which the repair removed');
+  });
+});

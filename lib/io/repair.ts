@@ -545,15 +545,18 @@ function orient(pos: Float64Array, tri: Uint32Array, edges: Edges) {
     const box = componentBox(pos, tri, faces);
     return { faces, box, volume: signedVolume(pos, tri, faces, box) };
   }).filter((c) => Math.abs(c.volume) > FLAT_VOLUME * boxDiagonal(c.box) ** 3);
-  const reverse = closed.filter((c) => {
+  const boxesAround = boxIndex(closed.map((c) => c.box));
+  const reverse = closed.filter((c, i) => {
     // Components may touch: one point could lie on another's surface, so a few points vote.
     const points = samplePoints(pos, tri, c.faces);
-    let depth = 0;
-    for (const d of closed) {
-      if (d === c) continue;
-      const inside = points.filter((p) => inBox(p, d.box) && Math.abs(windingNumber(pos, tri, d.faces, p)) > 0.5);
-      if (2 * inside.length > points.length) depth++;
+    const votes = new Map<number, number>();
+    for (const p of points) {
+      for (const j of boxesAround(p)) {
+        if (j !== i && Math.abs(windingNumber(pos, tri, closed[j].faces, p)) > 0.5) votes.set(j, (votes.get(j) ?? 0) + 1);
+      }
     }
+    let depth = 0;
+    for (const n of votes.values()) if (2 * n > points.length) depth++;
     return c.volume > 0 !== (depth % 2 === 0);
   });
   let reversedFaces = 0;
@@ -591,6 +594,31 @@ function componentBox(pos: Float64Array, tri: Uint32Array, faces: Int32Array): B
 
 function boxDiagonal(box: Box): number {
   return Math.hypot(box[3] - box[0], box[4] - box[1], box[5] - box[2]);
+}
+
+/**
+ * The boxes that contain a point, found on a uniform grid over all of them with about one cell per box,
+ * so that many small components cost little more than one each.
+ */
+function boxIndex(boxes: Box[]): (p: number[]) => number[] {
+  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+  for (const b of boxes) {
+    for (let k = 0; k < 3; k++) {
+      lo[k] = Math.min(lo[k], b[k]);
+      hi[k] = Math.max(hi[k], b[k + 3]);
+    }
+  }
+  const r = Math.max(1, Math.round(Math.cbrt(boxes.length)));
+  const cell = (x: number, k: number) => Math.min(r - 1, Math.max(0, Math.floor(((x - lo[k]) / (hi[k] - lo[k] || 1)) * r)));
+  const cells: number[][] = Array.from({ length: r ** 3 }, () => []);
+  boxes.forEach((b, i) => {
+    for (let x = cell(b[0], 0); x <= cell(b[3], 0); x++) {
+      for (let y = cell(b[1], 1); y <= cell(b[4], 1); y++) {
+        for (let z = cell(b[2], 2); z <= cell(b[5], 2); z++) cells[(x * r + y) * r + z].push(i);
+      }
+    }
+  });
+  return (p) => cells[(cell(p[0], 0) * r + cell(p[1], 1)) * r + cell(p[2], 2)].filter((i) => inBox(p, boxes[i]));
 }
 
 function inBox(p: number[], box: Box): boolean {

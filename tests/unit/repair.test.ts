@@ -127,6 +127,22 @@ describe('repairs', () => {
     expect(hollow.mesh.triangles.subarray(0, 3 * all.length)).toEqual(sphere.triangles);
   });
 
+  it('finds the one inside-out part among 8000 closed parts quickly', () => {
+    // A 20 x 20 x 20 grid of separate tetrahedra (spacing 2), the one at index 4321 reversed.
+    const positions: number[] = [], triangles: number[] = [];
+    for (let i = 0; i < 8000; i++) {
+      const offset = [i % 20, Math.floor(i / 20) % 20, Math.floor(i / 400)].map((x) => 2 * x);
+      positions.push(...TET_POSITIONS.map((x, k) => x + offset[k % 3]));
+      const faces = TET_TRIANGLES.map((v) => v + 4 * i);
+      triangles.push(...(i === 4321 ? flipped(mesh(TET_POSITIONS, faces), [0, 1, 2, 3]).triangles : faces));
+    }
+    const start = performance.now();
+    const result = repairMesh(mesh(positions, triangles));
+    expect(performance.now() - start).toBeLessThan(3000);
+    expect(result.repairs).toEqual(['reversed 1 closed component that faced inward (4 faces)']);
+    expect(Array.from(result.mesh.triangles.subarray(12 * 4321, 12 * 4322))).toEqual(TET_TRIANGLES.map((v) => v + 4 * 4321));
+  });
+
   it('splits a bow-tie vertex', () => {
     // Two tetrahedra touching at vertex 0.
     const other = TET_POSITIONS.map((x, i) => (i < 3 ? x : -x));

@@ -71,23 +71,28 @@ export class ParamsPanel {
     tag(gui.add(m, 'preset', Object.keys(PRESETS)).name('preset'), 'preset', 'Sets every option: the paper’s defaults, a quick run with few sources, or a finer one with more.')
       .onChange((name: string) => this.applyPreset(name));
 
+    // A slider only where the range is small and natural (an angle); elsewhere a number field with
+    // the range lower bound, the upper bound applied by `options` (optionRanges, as the core checks).
     const one = gui.addFolder('Stage 1 · one source');
     const changed = (key: OptionKey) => () => this.changed([key]);
+    const [angleMin, angleMax] = optionRanges.angleThreshold;
     tag(one.add(m, 'target', { 'euclid (space)': 'euclid', 'geodesic (surface)': 'geodesic' }), 'target', OPTION_HELP.target).onChange(changed('target'));
     tag(one.add(m, 'sphere'), 'sphere', OPTION_HELP.sphere).onChange(changed('sphere'));
-    tag(one.add(m, 'angleThreshold', 0, Math.PI, 0.01), 'angleThreshold', OPTION_HELP.angleThreshold).onFinishChange(changed('angleThreshold'));
-    tag(one.add(m, 'laplacianThreshold', 0, 2, 0.01), 'laplacianThreshold', OPTION_HELP.laplacianThreshold).onFinishChange(changed('laplacianThreshold'));
-    tag(one.add(m, 'pruneDepth', 0, 30, 1), 'pruneDepth', OPTION_HELP.pruneDepth).onFinishChange(changed('pruneDepth'));
+    tag(one.add(m, 'angleThreshold', angleMin, angleMax, 0.01), 'angleThreshold', OPTION_HELP.angleThreshold).onFinishChange(changed('angleThreshold'));
+    tag(one.add(m, 'laplacianThreshold').min(optionRanges.laplacianThreshold[0]).step(0.01), 'laplacianThreshold', OPTION_HELP.laplacianThreshold).onFinishChange(
+      changed('laplacianThreshold'),
+    );
+    tag(one.add(m, 'pruneDepth').min(optionRanges.pruneDepth[0]).step(1), 'pruneDepth', OPTION_HELP.pruneDepth).onFinishChange(changed('pruneDepth'));
 
     const whole = gui.addFolder('Stage 2 · whole shape');
     tag(whole.add(m, 'nAuto').name('n auto'), 'n-auto', N_AUTO_HELP).onChange(() => {
       this.nController.disable(m.nAuto);
       this.changed(['n']);
     });
-    this.nController = tag(whole.add(m, 'n', 1, 500, 1), 'n', OPTION_HELP.n).onFinishChange(changed('n'));
+    this.nController = tag(whole.add(m, 'n').min(optionRanges.n[0]).step(1), 'n', OPTION_HELP.n).onFinishChange(changed('n'));
     this.nController.disable(m.nAuto);
-    tag(whole.add(m, 'seed').step(1), 'seed', OPTION_HELP.seed).onFinishChange(changed('seed'));
-    tag(whole.add(m, 'pruneLengthFactor', 0, 20, 0.5), 'pruneLengthFactor', OPTION_HELP.pruneLengthFactor).onFinishChange(
+    tag(whole.add(m, 'seed').min(optionRanges.seed[0]).step(1), 'seed', OPTION_HELP.seed).onFinishChange(changed('seed'));
+    tag(whole.add(m, 'pruneLengthFactor').min(optionRanges.pruneLengthFactor[0]).step(0.5), 'pruneLengthFactor', OPTION_HELP.pruneLengthFactor).onFinishChange(
       changed('pruneLengthFactor'),
     );
   }

@@ -219,11 +219,15 @@ function weld(pos: Float64Array, tri: Uint32Array, nV: number, tolerance: number
     const cx = Math.floor(gx), cy = Math.floor(gy), cz = Math.floor(gz);
     const sx = gx - cx < 0.5 ? -1 : 1, sy = gy - cy < 0.5 ? -1 : 1, sz = gz - cz < 0.5 ? -1 : 1;
     let target = -1;
-    for (let i = 0; i < 8; i++) {
+    search: for (let i = 0; i < 8; i++) {
       const x = i & 1 ? cx + sx : cx, y = i & 2 ? cy + sy : cy, z = i & 4 ? cz + sz : cz;
       for (let w = slotHead[slotOf(x, y, z)]; w >= 0; w = nextInCell[w]) {
         const ex = pos[3 * w] - px, ey = pos[3 * w + 1] - py, ez = pos[3 * w + 2] - pz;
-        if (ex * ex + ey * ey + ez * ez <= tolerance2 && (target < 0 || w < target)) target = w;
+        const d2 = ex * ex + ey * ey + ez * ez;
+        if (d2 <= tolerance2 && (target < 0 || w < target)) target = w;
+        // Kept vertices are farther apart than the reach, so one at the same point is the only one in
+        // reach: stop looking (the common case of exact duplicates, in the first cell searched).
+        if (d2 === 0) break search;
       }
     }
     if (target >= 0) {

@@ -24,6 +24,12 @@ function expectClean(m: MeshArrays) {
   return facts;
 }
 
+/** CPU time since `start`: unlike wall time, it does not grow when other processes share the cores. */
+function cpuMs(start: NodeJS.CpuUsage): number {
+  const { user, system } = process.cpuUsage(start);
+  return (user + system) / 1000;
+}
+
 /** Each face as the sorted corner positions: what splits and flips must not change. */
 function faceCorners(m: MeshArrays): string[] {
   return Array.from({ length: m.triangles.length / 3 }, (_, f) =>
@@ -74,9 +80,9 @@ describe('meshes that need no repair', () => {
   it('a million faces in well under a few seconds', () => {
     const big = torus(3, 1, 1000, 500);
     expect(big.triangles.length).toBe(3_000_000);
-    const start = performance.now();
+    const start = process.cpuUsage();
     expect(repairMesh(big).repairs).toEqual([]);
-    expect(performance.now() - start).toBeLessThan(5000);
+    expect(cpuMs(start)).toBeLessThan(5000);
   });
 });
 
@@ -136,9 +142,9 @@ describe('repairs', () => {
       const faces = TET_TRIANGLES.map((v) => v + 4 * i);
       triangles.push(...(i === 4321 ? flipped(mesh(TET_POSITIONS, faces), [0, 1, 2, 3]).triangles : faces));
     }
-    const start = performance.now();
+    const start = process.cpuUsage();
     const result = repairMesh(mesh(positions, triangles));
-    expect(performance.now() - start).toBeLessThan(3000);
+    expect(cpuMs(start)).toBeLessThan(3000);
     expect(result.repairs).toEqual(['reversed 1 closed component that faced inward (4 faces)']);
     expect(Array.from(result.mesh.triangles.subarray(12 * 4321, 12 * 4322))).toEqual(TET_TRIANGLES.map((v) => v + 4 * 4321));
   });

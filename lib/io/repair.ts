@@ -449,15 +449,15 @@ function splitNonManifold(tri: Uint32Array, edges: Edges, nV: number, mode: 'kee
     const first = edgeStart[e], n = edgeStart[e + 1] - first;
     if (n === 2) join(edgeCorners[first], edgeCorners[first + 1]);
     if (n <= 2) continue;
-    const corners = Array.from(edgeCorners.subarray(first, first + n));
-    nonManifold.push(corners);
-    onCutEdge[tri[corners[0]]] = onCutEdge[tri[next(corners[0])]] = 1;
+    const around = Array.from(edgeCorners.subarray(first, first + n));
+    nonManifold.push(around);
+    onCutEdge[tri[around[0]]] = onCutEdge[tri[next(around[0])]] = 1;
     if (mode === 'cut-all') continue;
-    let pair = [corners[0], corners[1]];
+    let pair = [around[0], around[1]];
     search: for (let i = 0; i < n; i++) {
       for (let j = i + 1; j < n; j++) {
-        if (tri[corners[i]] === tri[next(corners[j])]) {
-          pair = [corners[i], corners[j]];
+        if (tri[around[i]] === tri[next(around[j])]) {
+          pair = [around[i], around[j]];
           break search;
         }
       }

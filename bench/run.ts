@@ -1,7 +1,7 @@
 // `npm run bench`: CSCD Studio against the skeletonisers people use instead, timed alike and scored by
 // the same code (bench/README.md says what every column means and why the comparison is fair).
 //
-//   npm run bench [-- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [folder...]]
+//   npm run bench [-- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [--cpu N] [folder...]]
 //
 // Meshes: every ../shared/data/meshes/*.ply (the quick subset with --quick), plus every .ply/.obj/.off
 // of the folders given; --meshes keeps only the named ones (with or without extension). For each mesh,
@@ -65,6 +65,8 @@ interface Config {
   quick: boolean;
   methods: Method[];
   timeout: number;
+  /** The core every method is pinned to (two runs on two idle cores split a long bench). */
+  cpu: number;
   meshes: string[];
   folders: string[];
   argv: string[];
@@ -83,11 +85,12 @@ function parseCommandLine(argv: string[]): Config {
       methods: { type: 'string' },
       meshes: { type: 'string' },
       timeout: { type: 'string' },
+      cpu: { type: 'string' },
       help: { type: 'boolean', short: 'h', default: false },
     },
   });
   if (values.help) {
-    process.stdout.write('usage: npm run bench -- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [folder...]\n');
+    process.stdout.write('usage: npm run bench -- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [--cpu N] [folder...]\n');
     process.exit(0);
   }
   const quick = values.quick === true;
@@ -101,6 +104,8 @@ function parseCommandLine(argv: string[]): Config {
 
   const timeout = values.timeout === undefined ? DEFAULT_TIMEOUT[quick ? 'quick' : 'full'] : Number(values.timeout);
   if (!(timeout > 0)) throw new BenchError(`--timeout must be a positive number of seconds, got '${values.timeout}'`);
+  const cpu = values.cpu === undefined ? 0 : Number(values.cpu);
+  if (!Number.isInteger(cpu) || cpu < 0 || cpu >= os.cpus().length) throw new BenchError(`--cpu must be a core number below ${os.cpus().length}, got '${values.cpu}'`);
 
   for (const folder of positionals) {
     if (!existsSync(folder) || !statSync(folder).isDirectory()) throw new BenchError(`'${folder}' is not a folder`);
@@ -117,7 +122,7 @@ function parseCommandLine(argv: string[]): Config {
     meshes = meshes.filter((f) => names.includes(path.basename(f)) || names.includes(stem(f)));
   }
   if (!meshes.length) throw new BenchError('no meshes to run on');
-  return { quick, methods, timeout, meshes, folders: positionals, argv };
+  return { quick, methods, timeout, cpu, meshes, folders: positionals, argv };
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -138,9 +143,9 @@ function reasonOf(stderr: string): string {
   return line.length > 100 ? `${line.slice(0, 97)}...` : line;
 }
 
-function runMethod(method: Method, mesh: string, runDir: string, label: string, timeout: number): Run {
+function runMethod(method: Method, mesh: string, runDir: string, label: string, timeout: number, cpu: number): Run {
   const file = path.join(runDir, `${label}.${method}.${RUNNERS[method].ext}`);
-  const command = ['taskset', '-c', '0', ...RUNNERS[method].command(mesh, file)];
+  const command = ['taskset', '-c', String(cpu), ...RUNNERS[method].command(mesh, file)];
   const result = spawnSync(command[0], command.slice(1), {
     cwd: repoRoot,
     env: { ...process.env, ...ONE_THREAD_ENV },
@@ -228,7 +233,7 @@ function markdown(rows: Row[], config: Config, machine: string, meshesDone: numb
       + `${config.meshes.length} meshes${config.quick ? ' (quick)' : ''}; timeout ${config.timeout} s per method and mesh.`
       + (meshesDone < config.meshes.length ? ` **Partial: ${meshesDone} of ${config.meshes.length} meshes done.**` : ''),
     '',
-    'Every method ran in its own process pinned to one core (`taskset -c 0`, `OMP_NUM_THREADS=1` and the like), '
+    `Every method ran in its own process pinned to one core (\`taskset -c ${config.cpu}\`, \`OMP_NUM_THREADS=1\` and the like), `
       + 'the methods one after the other for each mesh in the order cscd, ls, msls, mcf, so that drift of the machine affects them alike. '
       + 'Seconds: wall time of the skeletonisation alone, as each runner measures it (cscd: `openSurface` + `skeleton`; ls/msls: '
       + '`graph.from_mesh` + `LS_skeleton`/`MSLS_skeleton`; mcf: `extract_mean_curvature_flow_skeleton`), reading and writing files excluded. '
@@ -376,7 +381,7 @@ async function main(): Promise<void> {
 
     const mine: Row[] = [];
     for (const method of config.methods) {
-      const run = mesh ? runMethod(method, file, runDir, fileLabel, config.timeout) : { status: 'failed' as const, seconds: null, reason: meshError, file: '' };
+      const run = mesh ? runMethod(method, file, runDir, fileLabel, config.timeout, config.cpu) : { status: 'failed' as const, seconds: null, reason: meshError, file: '' };
       process.stdout.write(`  ${method.padEnd(5)} ${runCell(run, config.timeout)}${run.status === 'ok' ? ' s' : ''}\n`);
       mine.push({ mesh: label, vertices, genus, method, run, score: null });
     }

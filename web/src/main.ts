@@ -9,8 +9,9 @@
  */
 import './style.css';
 import { MESH_EXTENSIONS } from '../../lib/io/index.ts';
-import { SingleSource, type StudioContext } from './single-source.ts';
+import { SingleSource } from './single-source.ts';
 import { STAGES, SOURCE_STAGES, stageDef, stageIndex, type StageKey } from './stage-defs.ts';
+import type { StudioContext } from './studio-context.ts';
 import { baseName, canvasPng, saveFile } from './ui/downloads.ts';
 import { installFileSources } from './ui/files.ts';
 import { DEFAULT_SAMPLE, installGallery, markSample, sampleByName, type Sample } from './ui/gallery.ts';

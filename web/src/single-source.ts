@@ -3,44 +3,17 @@
  * clicked or random vertex, re-runs the same source when a stage-1 option changes (per-mesh data is
  * cached in the core, so that is quick), and builds the layers of every intermediate result.
  */
-import { defaultOptions } from '../../lib/core/options.ts';
-import type { Options } from '../../lib/core/types.ts';
 import { SOURCE_STAGES, type StageKey } from './stage-defs.ts';
+import { changedOptions, type StudioContext } from './studio-context.ts';
 import { reachedStage, showSeparatorFigures } from './ui/separator-panel.ts';
 import { niceSpacing } from './viewer/colormap.ts';
 import { SpheresLayer } from './viewer/layers.ts';
 import { separatorLayers } from './viewer/separator-layers.ts';
-import type { Viewer } from './viewer/viewer.ts';
-import { WorkerError, type GeometryClient } from './worker/client.ts';
+import { WorkerError } from './worker/client.ts';
 import type { SeparatorReply } from './worker/protocol.ts';
 
-/** What the page lends the controllers: the viewer, the worker, the options and the busy state. */
-export interface StudioContext {
-  viewer: Viewer;
-  client: GeometryClient;
-  /** Colours of the layers, for the layer list. */
-  layerColors: Map<string, string>;
-  options(): Options;
-  /** A computation starts / ends (page state, busy status). */
-  begin(status: string): void;
-  end(): void;
-  /** Shows an error box. */
-  fail(title: string, error: unknown): void;
-  /** The controller's data changed: the page redraws the stage shown. */
-  changed(): void;
-  /** A run progressed (no new picture): the page updates the timeline only. */
-  progressed(): void;
-}
-
 /** Names of the layers a stage-1 run adds (besides the surface's colormap). */
-export const SEPARATOR_LAYERS = ['source', 'cut-locus', 'target', 'path-1', 'path-2', 'approx-loop', 'sphere', 'loop'];
-
-/** Only the options that differ from the defaults travel to the worker. */
-export function changedOptions(options: Options): Partial<Options> {
-  return Object.fromEntries(
-    (Object.keys(options) as Array<keyof Options>).filter((k) => options[k] !== defaultOptions[k]).map((k) => [k, options[k]]),
-  ) as Partial<Options>;
-}
+const SEPARATOR_LAYERS = ['source', 'cut-locus', 'target', 'path-1', 'path-2', 'approx-loop', 'sphere', 'loop'];
 
 export class SingleSource {
   /** The run shown (null: none yet, or it failed). */

@@ -134,7 +134,7 @@ export const STAGES: readonly StageDef[] = [
     group: 'shape',
     section: 'Sec. 4.1, 4.2.1, Alg. 1',
     caption:
-      'Stage 1 from N sources spread over the surface (farthest-point sampling; auto N stops when the loops cover the surface), one candidate loop each, drawn as they arrive.',
+      'Stage 1 from N sources spread over the surface: each new source is drawn where the sources and loops so far are far away (adaptive sampling, Sec. 4.1.7), so unexplored features are visited first; auto N stops when the loops cover the surface. One candidate loop per source, drawn as they arrive.',
     layers: ['sk-progress', 'sk-rejected', 'sk-packed'],
     legend: [
       { layer: 'sk-progress', label: 'candidate', color: COLORS.candidate },

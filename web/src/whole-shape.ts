@@ -9,8 +9,7 @@
  * shown and `dataset.skSelected` the selected node.
  */
 import * as THREE from 'three';
-import type { StudioContext } from './single-source.ts';
-import { changedOptions } from './single-source.ts';
+import { changedOptions, type StudioContext } from './studio-context.ts';
 import { COLORS, type StageKey } from './stage-defs.ts';
 import { byTestId, formatLength } from './ui/panel.ts';
 import { SkeletonPanel } from './ui/skeleton-panel.ts';
@@ -33,7 +32,7 @@ import type { EvaluationReply, PipelineNews, SkeletonReply } from './worker/prot
 /** Least time between two redraws of the candidate loops while they arrive. */
 const PROGRESS_REDRAW_MS = 400;
 
-export const isSkeletonLayer = (name: string) => name.startsWith('sk-');
+const isSkeletonLayer = (name: string) => name.startsWith('sk-');
 
 export class WholeShape {
   result: SkeletonReply | null = null;

@@ -48,6 +48,7 @@ interface Model extends Omit<Options, 'n'> {
 }
 
 const FALLBACK_N = 40;
+const CUSTOM = 'custom';
 
 export class ParamsPanel {
   /** The user changed these options (after editing finished: a slider released, a number entered). */
@@ -68,7 +69,7 @@ export class ParamsPanel {
       return c;
     };
 
-    tag(gui.add(m, 'preset', Object.keys(PRESETS)).name('preset'), 'preset', 'Sets every option: the paper’s defaults, a quick run with few sources, or a finer one with more.')
+    tag(gui.add(m, 'preset', [...Object.keys(PRESETS), CUSTOM]).name('preset'), 'preset', 'Sets every option: the paper’s defaults, a quick run with few sources, or a finer one with more.')
       .onChange((name: string) => this.applyPreset(name));
 
     // A slider only where the range is small and natural (an angle); elsewhere a number field with
@@ -125,7 +126,7 @@ export class ParamsPanel {
 
   private applyPreset(name: string): void {
     const preset = PRESETS[name];
-    if (!preset) return;
+    if (!preset) return; // 'custom' only names the options as they are
     const before = this.options;
     this.set({ ...defaultOptions, ...preset });
     const after = this.options;
@@ -147,9 +148,9 @@ function toModel(options: Options): Omit<Model, 'preset'> {
   return { ...options, nAuto: auto, n: auto ? FALLBACK_N : (options.n as number) };
 }
 
-/** The preset whose options these are, or '' (custom). */
+/** The preset whose options these are, or CUSTOM. */
 function presetOf(options: Options): string {
   const same = (preset: Partial<Options>) =>
     (Object.keys(defaultOptions) as OptionKey[]).every((k) => ({ ...defaultOptions, ...preset })[k] === options[k]);
-  return Object.keys(PRESETS).find((name) => same(PRESETS[name])) ?? '';
+  return Object.keys(PRESETS).find((name) => same(PRESETS[name])) ?? CUSTOM;
 }

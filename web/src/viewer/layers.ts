@@ -297,48 +297,6 @@ export class SpheresLayer implements Layer {
   }
 }
 
-/** Line segments: `positions` holds two xyz points per segment (cut locus, skeleton edges). */
-export class PolylineLayer implements Layer {
-  readonly object: THREE.LineSegments;
-
-  constructor(
-    readonly label: string,
-    positions: Float32Array,
-    color: THREE.ColorRepresentation = 0x111111,
-  ) {
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
-    this.object = new THREE.LineSegments(geometry, new THREE.LineBasicMaterial({ color }));
-  }
-
-  dispose(): void {
-    this.object.geometry.dispose();
-    (this.object.material as THREE.Material).dispose();
-  }
-}
-
-/** Points of a fixed screen size (skeleton nodes, samples). */
-export class PointsLayer implements Layer {
-  readonly object: THREE.Points;
-
-  constructor(
-    readonly label: string,
-    positions: Float32Array,
-    color: THREE.ColorRepresentation = 0xffffff,
-    sizePx = 6,
-  ) {
-    const geometry = new THREE.BufferGeometry();
-    geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
-    const material = new THREE.PointsMaterial({ color, size: sizePx, sizeAttenuation: false });
-    this.object = new THREE.Points(geometry, material);
-  }
-
-  dispose(): void {
-    this.object.geometry.dispose();
-    (this.object.material as THREE.Material).dispose();
-  }
-}
-
 /** Uniform grid over the vertices for nearest-vertex queries (ring search, exact). */
 class VertexGrid {
   private readonly cells = new Map<number, number[]>();

@@ -13,7 +13,7 @@ import type { NamedLayer } from './separator-layers.ts';
 /** Sizes as fractions of the mesh's bounding-sphere radius. */
 const RADIUS = { candidate: 0.0042, rejected: 0.0036, packed: 0.0072, edge: 0.0105, minNode: 0.016 };
 /** Node spheres are drawn at this fraction of their radius (the full radius hides the skeleton in a blob). */
-export const NODE_SCALE = 0.27;
+const NODE_SCALE = 0.27;
 
 /**
  * Above this many segments a loop layer is drawn as lines instead of tubes: software renderers

@@ -1,6 +1,7 @@
 import { defineConfig } from '@playwright/test';
 
-const PORT = 4173;
+// E2E_PORT lets a second run (e.g. a clean clone checked beside a working tree) use another port.
+const PORT = Number(process.env.E2E_PORT ?? 4173);
 
 /**
  * End-to-end tests of the production build in Debian's Chromium (no browser downloads). WebGL runs

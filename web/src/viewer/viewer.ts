@@ -39,15 +39,18 @@ export class Viewer {
   private readonly layers = new Map<string, Layer>();
   private readonly raycaster = new THREE.Raycaster();
   private frameRequested = false;
+  /** Drawing-buffer pixels per CSS pixel when the view is still. */
+  private readonly pixelRatio: number;
   private renderPending = false;
   private pointerDown: { x: number; y: number; id: number } | null = null;
 
   constructor(private readonly container: HTMLElement) {
     // A software renderer (no GPU) draws on the CPU cores the worker computes on, and the page waits
-    // for each frame: there, no multisampling and one pixel per CSS pixel keep frames short.
+    // for each frame: there, no multisampling, one pixel per CSS pixel, and half that while orbiting.
     const software = isSoftwareRenderer();
     this.renderer = new THREE.WebGLRenderer({ antialias: !software, alpha: true, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio, 2));
+    this.pixelRatio = software ? 1 : Math.min(window.devicePixelRatio, 2);
+    this.renderer.setPixelRatio(this.pixelRatio);
     this.renderer.setClearColor(0x000000, 0); // the page background shows through
     this.renderer.outputColorSpace = THREE.SRGBColorSpace;
     const canvas = this.renderer.domElement;
@@ -61,6 +64,10 @@ export class Viewer {
     this.controls.enableDamping = true;
     this.controls.dampingFactor = 0.12;
     this.controls.addEventListener('change', () => this.requestRender());
+    if (software) {
+      this.controls.addEventListener('start', () => this.setPixelRatio(this.pixelRatio / 2));
+      this.controls.addEventListener('end', () => this.setPixelRatio(this.pixelRatio));
+    }
 
     canvas.addEventListener('pointerdown', (e) => {
       if (e.button === 0 && e.isPrimary) this.pointerDown = { x: e.clientX, y: e.clientY, id: e.pointerId };
@@ -158,6 +165,11 @@ export class Viewer {
     this.controls.maxDistance = whole * 20;
     this.controls.update();
     this.requestRender();
+  }
+
+  private setPixelRatio(ratio: number): void {
+    this.renderer.setPixelRatio(ratio);
+    this.resize();
   }
 
   private resize(): void {

@@ -128,6 +128,8 @@ test('a click runs stage 1 and Next steps through every stage, each drawing its 
   await expectStage(page, 'paths', 'Target & paths');
   await page.keyboard.press('ArrowRight');
   await expectStage(page, 'loop', 'Loop');
+  await page.keyboard.press('4'); // digits enter stages by number
+  await expectStage(page, 'paths', 'Target & paths');
   await page.getByTestId('stage-cut-locus').click();
   await expectStage(page, 'cut-locus', 'Cut locus');
   await page.getByTestId('stage-prev').click();

@@ -1,7 +1,8 @@
 /**
  * The stage timeline across the top of the viewport: one pill per stage (number, title, the time
- * its computation took, a progress bar while it runs), Prev / Next and the ←/→ keys. A pill is
- * `ready` (computed), `pending` (entering it computes it), `running` or `disabled`.
+ * its computation took, a progress bar while it runs), Prev / Next, the ←/→ keys and the digit keys
+ * (1-9, 0 for the tenth). A pill is `ready` (computed), `pending` (entering it computes it), `running`
+ * or `disabled`.
  */
 import { STAGES, type StageGroup, type StageKey } from '../stage-defs.ts';
 
@@ -57,6 +58,7 @@ export class Timeline {
       if (target?.closest('input, select, textarea, [contenteditable="true"]')) return;
       if (e.key === 'ArrowRight') this.step(1);
       else if (e.key === 'ArrowLeft') this.step(-1);
+      else if (/^[0-9]$/.test(e.key)) this.jump(e.key === '0' ? 9 : Number(e.key) - 1);
       else return;
       e.preventDefault();
     });
@@ -94,6 +96,12 @@ export class Timeline {
       if ((this.states.get(keys[i]) ?? 'disabled') !== 'disabled') return keys[i];
     }
     return null;
+  }
+
+  /** The stage at `index` (keys 1-9 and 0), when it can be entered. */
+  private jump(index: number): void {
+    const key = STAGES[index]?.key;
+    if (key && (this.states.get(key) ?? 'disabled') !== 'disabled') this.onSelect?.(key);
   }
 
   private step(direction: 1 | -1): void {

@@ -280,7 +280,9 @@ function refresh(): void {
   updateTimes();
   updateLayerList(def.layers, def.dimmed ?? []);
   updateDownloads();
-  writeUrl({ mesh: mesh?.sample ?? null, stage: key, source: single.source, options: params.options });
+  // A file of the user's cannot be linked to: its source vertex would mean nothing on the default sample.
+  const sample = mesh?.sample ?? null;
+  writeUrl({ mesh: sample, stage: key, source: sample ? single.source : null, options: params.options });
   viewer.requestRender();
 }
 

@@ -274,7 +274,7 @@ function refresh(): void {
     section.hidden = section.dataset.group !== (def.group === 'mesh' ? 'source' : def.group);
   }
   byTestId('sk-recon-result').hidden = key !== 'reconstruction' || !whole.evaluation;
-  viewportHint.textContent = `${def.click} · ←/→ or 1–0: stages · drag to orbit · right-drag to pan · scroll to zoom`;
+  viewportHint.textContent = [def.click, '←/→ or 1–0: stages', 'drag to orbit', 'right-drag to pan', 'scroll to zoom'].filter(Boolean).join(' · ');
 
   timeline.show(key, pillStates());
   updateTimes();

@@ -54,8 +54,8 @@ export interface StageDef {
   /** Of those, the ones drawn muted (context from an earlier stage). */
   dimmed?: string[];
   legend: Array<{ layer: string; label: string; color: string }>;
-  /** What a click on the surface does here (the viewport hint). */
-  click: string;
+  /** What a click on the surface does here (the viewport hint); null: nothing. */
+  click: string | null;
 }
 
 const PICK = 'click the surface to run stage 1 from that vertex';
@@ -141,7 +141,7 @@ export const STAGES: readonly StageDef[] = [
       { layer: 'sk-packed', label: 'packed', color: COLORS.packed },
       { layer: 'sk-rejected', label: 'rejected', color: COLORS.rejected },
     ],
-    click: 'drag to orbit',
+    click: null,
   },
   {
     key: 'packing',
@@ -152,7 +152,7 @@ export const STAGES: readonly StageDef[] = [
       'Short loops and loops whose centroid lies outside the shape are pruned; greedy weighted set packing then keeps the high-scoring loops that overlap no other kept loop. Each kept loop is one local separator of the shape.',
     layers: ['sk-packed'],
     legend: [{ layer: 'sk-packed', label: 'packed loop', color: COLORS.packed }],
-    click: 'drag to orbit',
+    click: null,
   },
   {
     key: 'regions',
@@ -189,7 +189,7 @@ export const STAGES: readonly StageDef[] = [
       'The shape rebuilt from the skeleton alone (a convolution surface of its nodes and radii, see-through) and each vertex coloured by its squared distance to it: the paper’s reconstruction error, on the mesh scaled to unit bounding-box diagonal.',
     layers: ['sk-recon'],
     legend: [{ layer: 'sk-recon', label: 'reconstructed surface', color: COLORS.reconstruction }],
-    click: 'drag to orbit',
+    click: null,
   },
 ];
 

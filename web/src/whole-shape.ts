@@ -29,6 +29,9 @@ import { GlassSphereLayer } from './viewer/tubes.ts';
 import { WorkerError, type SkeletonJob } from './worker/client.ts';
 import type { EvaluationReply, PipelineNews, SkeletonReply } from './worker/protocol.ts';
 
+/** Lets the page handle input and draw between two pieces of work. */
+const nextTask = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
+
 /** Least time between two redraws of the candidate loops while they arrive. */
 const PROGRESS_REDRAW_MS = 400;
 
@@ -134,7 +137,7 @@ export class WholeShape {
       const reply = await job.result;
       if (id !== this.jobId) return;
       if (this.cancelRequested) throw new WorkerError('cancelled', 'The computation was cancelled.');
-      this.showResult(reply);
+      if (!(await this.showResult(reply, id))) return;
     } catch (error) {
       if (id !== this.jobId) return;
       const news = this.lastNews as PipelineNews | null; // set by the progress callback meanwhile
@@ -218,17 +221,26 @@ export class WholeShape {
 
   // -- the result -----------------------------------------------------------------------------------
 
-  private showResult(reply: SkeletonReply): void {
+  /** Builds the result's layers a task at a time (the page stays responsive); false if a newer run took over. */
+  private async showResult(reply: SkeletonReply, id: number): Promise<boolean> {
     const { viewer } = this.ctx;
     const surface = viewer.surface!;
     const s = reply.skeleton;
     this.cancelRedraw();
-    viewer.setLayer('sk-progress', null);
-    this.progressLoops = null;
     for (const { name, layer, color } of skeletonLayers(s, surface)) {
+      await nextTask();
+      if (id !== this.jobId) {
+        layer.dispose();
+        return false;
+      }
       this.ctx.layerColors.set(name, color);
+      layer.object.visible = false; // until the stage shown asks for it
       viewer.setLayer(name, layer);
     }
+    await nextTask();
+    if (id !== this.jobId) return false;
+    viewer.setLayer('sk-progress', null);
+    this.progressLoops = null;
     const nodeCount = Math.floor(s.nodes.length / 3);
     // The legend lists the regions (nodes that own vertices; branch nodes own none).
     const owned = new Set<number>();
@@ -244,6 +256,7 @@ export class WholeShape {
     });
     document.body.dataset.skRun = 'done';
     document.body.dataset.skeletonRuns = String(++this.runs);
+    return true;
   }
 
   /** The surface for a whole-shape stage: plain, in region colours, see-through or in error colours. */

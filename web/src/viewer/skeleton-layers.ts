@@ -92,39 +92,38 @@ export function candidateRadius(surface: SurfaceLayer): number {
   return RADIUS.candidate * surface.boundingSphere.radius;
 }
 
-/** Layers of a finished run: `sk-rejected`, `sk-packed`, `sk-edges`, `sk-nodes` (those with data). */
-export function skeletonLayers(s: SkeletonData, surface: SurfaceLayer): NamedLayer[] {
+/**
+ * Layers of a finished run: `sk-rejected`, `sk-packed`, `sk-edges`, `sk-nodes` (those with data), built
+ * one per iteration so the caller can let the page breathe in between (lifting hundreds of loops off
+ * the surface takes a while on a large mesh).
+ */
+export function* skeletonLayers(s: SkeletonData, surface: SurfaceLayer): Generator<NamedLayer> {
   const R = surface.boundingSphere.radius;
-  const out: NamedLayer[] = [];
-
-  const rejected = new LoopSet(surface, RADIUS.rejected * R * 0.6);
-  const packed = new LoopSet(surface, RADIUS.packed * R * 0.6);
-  s.candidates.loops.forEach((loop, i) => (s.candidates.fates[i] === 'packed' ? packed : rejected).add(loop));
-  if (rejected.count > 0) {
-    out.push({ name: 'sk-rejected', layer: rejected.layer('Rejected loops', COLORS.rejected, RADIUS.rejected * R), color: COLORS.rejected });
+  for (const [name, label, packed, radius, color] of [
+    ['sk-rejected', 'Rejected loops', false, RADIUS.rejected, COLORS.rejected],
+    ['sk-packed', 'Packed loops', true, RADIUS.packed, COLORS.packed],
+  ] as const) {
+    const loops = new LoopSet(surface, radius * R * 0.6);
+    s.candidates.loops.forEach((loop, i) => {
+      if ((s.candidates.fates[i] === 'packed') === packed) loops.add(loop);
+    });
+    if (loops.count > 0) yield { name, layer: loops.layer(label, color, radius * R), color };
   }
-  if (packed.count > 0) {
-    out.push({ name: 'sk-packed', layer: packed.layer('Packed loops', COLORS.packed, RADIUS.packed * R), color: COLORS.packed });
-  }
 
-  const nodeCount = Math.floor(s.nodes.length / 3);
-  if (nodeCount > 0) {
-    const edgeRadius = RADIUS.edge * R;
-    if (s.edges.length >= 2) {
-      out.push({
-        name: 'sk-edges',
-        layer: new TubesLayer('Skeleton edges', graphSegments(s.nodes, s.edges), new Float32Array(0), {
-          color: COLORS.edge,
-          radius: edgeRadius,
-          glow: 0.25,
-        }),
+  if (s.edges.length >= 2) {
+    yield {
+      name: 'sk-edges',
+      layer: new TubesLayer('Skeleton edges', graphSegments(s.nodes, s.edges), new Float32Array(0), {
         color: COLORS.edge,
-      });
-    }
-    const radii = nodeRadii(s, R);
-    out.push({ name: 'sk-nodes', layer: new SpheresLayer('Skeleton nodes', s.nodes, radii, COLORS.node), color: COLORS.node });
+        radius: RADIUS.edge * R,
+        glow: 0.25,
+      }),
+      color: COLORS.edge,
+    };
   }
-  return out;
+  if (s.nodes.length >= 3) {
+    yield { name: 'sk-nodes', layer: new SpheresLayer('Skeleton nodes', s.nodes, nodeRadii(s, R), COLORS.node), color: COLORS.node };
+  }
 }
 
 /** Drawn node radii: the node's radius scaled, never thinner than the edges (branch nodes may have none). */

@@ -60,30 +60,6 @@ function fail(title: string, error: unknown): void {
   panel.showError(title, error instanceof Error ? error.message : String(error));
 }
 
-const ctx: StudioContext = {
-  viewer,
-  client: null as unknown as GeometryClient, // set below, once the client exists
-  layerColors,
-  options: () => params.options,
-  begin: (status) => {
-    computing++;
-    failed = false;
-    panel.clearError();
-    panel.setStatus(status, true);
-    updateState();
-  },
-  end: () => {
-    computing--;
-    updateState();
-  },
-  fail,
-  changed: () => refresh(),
-  progressed: () => {
-    timeline.show(shownStage(), pillStates());
-    updateTimes();
-  },
-};
-
 /** Shows the worker being replaced until the mesh is open in the new one. */
 function awaitRestart(restored: Promise<unknown>): void {
   opening++;
@@ -108,14 +84,37 @@ const client = new GeometryClient({
   // The worker was replaced to stop a cancelled run: the mesh is re-opened, no error to show.
   onRestart: awaitRestart,
 });
-ctx.client = client;
+const ctx: StudioContext = {
+  viewer,
+  client,
+  layerColors,
+  options: () => params.options,
+  begin: (status) => {
+    computing++;
+    failed = false;
+    panel.clearError();
+    panel.setStatus(status, true);
+    updateState();
+  },
+  end: () => {
+    computing--;
+    updateState();
+  },
+  fail,
+  changed: () => refresh(),
+  progressed: () => {
+    timeline.show(shownStage(), pillStates());
+    updateTimes();
+  },
+};
+
 const single = new SingleSource(ctx);
 const whole = new WholeShape(ctx);
 
 // -- opening meshes ------------------------------------------------------------------------------
 
 async function openBytes(fileName: string, bytes: ArrayBuffer, sample: string | null): Promise<boolean> {
-  whole.invalidate(); // a running skeleton would hold up the open
+  if (whole.running) whole.invalidate(); // it would hold up the open; a finished result stays if the file is refused
   opening++;
   failed = false;
   panel.clearError();

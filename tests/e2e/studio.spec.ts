@@ -108,6 +108,20 @@ test('a parameter change re-runs only what depends on it', async ({ page }) => {
   await enterStage(page, 'skeleton');
   await expect(body(page)).toHaveAttribute('data-skeleton-runs', '1');
 
+  // Every parameter says what it changes, in which unit, and what it re-runs.
+  const tips: Record<string, RegExp> = {
+    target: /euclid.*geodesic.*Re-runs the source/,
+    sphere: /sphere.*Re-runs the source/,
+    angleThreshold: /radians/,
+    laplacianThreshold: /unitless/,
+    pruneDepth: /edges/,
+    'n-auto': /auto/,
+    n: /Re-runs the whole shape/,
+    seed: /same seed, same skeleton/,
+    pruneLengthFactor: /mean edge lengths/,
+  };
+  for (const [option, tip] of Object.entries(tips)) await expect(page.getByTestId(`opt-${option}`)).toHaveAttribute('title', tip);
+
   // n: the whole shape again (it is on screen), not the single source.
   await setNumber(page, 'n', 14);
   await expect(body(page)).toHaveAttribute('data-skeleton-runs', '2', { timeout: 60_000 });

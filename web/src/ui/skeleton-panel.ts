@@ -100,6 +100,7 @@ export class SkeletonPanel {
   /** Shows a result's figures (or hides the block when null). */
   setResult(reply: SkeletonReply | null, regions = 0): void {
     byTestId('sk-result').hidden = !reply;
+    this.compute.textContent = reply ? 'Compute again' : 'Compute skeleton';
     byTestId('sk-empty').hidden = !!reply || !byTestId('sk-progress').hidden;
     if (!reply) {
       for (const id of ['sk-timing-stage1', 'sk-timing-stage2']) byTestId(id).textContent = '–';

@@ -192,7 +192,11 @@ export class RegionLayer implements Layer {
   }
 
   dispose(): void {
-    // Not geometry.dispose(): that would free the GPU buffers it shares with the surface.
+    // Let go of the shared buffers first: disposing frees the buffers of the attributes still held.
+    const geometry = this.object.geometry;
+    geometry.deleteAttribute('position');
+    geometry.deleteAttribute('normal');
+    geometry.dispose();
     this.object.material.dispose();
   }
 }

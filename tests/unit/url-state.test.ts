@@ -1,0 +1,31 @@
+// The page's link format (web/src/ui/url-state.ts): what a hash restores, and that anything out of
+// range or unknown falls back to the defaults instead of reaching the core.
+import { describe, expect, it } from 'vitest';
+import { defaultOptions } from '../../lib/core/options.ts';
+import { readUrl } from '../../web/src/ui/url-state.ts';
+
+describe('readUrl', () => {
+  it('reads the sample, stage, source and every option', () => {
+    const state = readUrl(
+      '#mesh=bob&stage=skeleton&source=812&target=geodesic&sphere=false&seed=7&angleThreshold=1.5&laplacianThreshold=0.4&pruneDepth=5&n=40&pruneLengthFactor=2.5',
+    );
+    expect(state).toEqual({
+      mesh: 'bob',
+      stage: 'skeleton',
+      source: 812,
+      options: { target: 'geodesic', sphere: false, seed: 7, angleThreshold: 1.5, laplacianThreshold: 0.4, pruneDepth: 5, n: 40, pruneLengthFactor: 2.5 },
+    });
+    expect(readUrl('#n=auto').options.n).toBe('auto');
+  });
+
+  it('gives the defaults for an empty hash', () => {
+    expect(readUrl('')).toEqual({ mesh: null, stage: null, source: null, options: defaultOptions });
+  });
+
+  it('ignores values out of range, of the wrong kind or unknown', () => {
+    const state = readUrl(
+      '#mesh=../etc&stage=nowhere&source=-3&target=far&sphere=yes&seed=1.5&angleThreshold=4&laplacianThreshold=-1&pruneDepth=2.5&n=0&pruneLengthFactor=abc',
+    );
+    expect(state).toEqual({ mesh: null, stage: null, source: null, options: defaultOptions });
+  });
+});

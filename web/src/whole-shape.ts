@@ -42,13 +42,13 @@ export class WholeShape {
   /** The evaluation of the result (null until the reconstruction stage first asks for it). */
   evaluation: EvaluationReply | null = null;
   /** The selected skeleton node, or null. */
-  selected: number | null = null;
+  private selected: number | null = null;
   /** Fraction of the sources done while running (null otherwise). */
   progress: number | null = null;
 
-  readonly panel = new SkeletonPanel();
+  private readonly panel = new SkeletonPanel();
   private job: SkeletonJob | null = null;
-  private running_: Promise<void> | null = null;
+  private runPromise: Promise<void> | null = null;
   private jobId = 0;
   private cancelRequested = false;
   /** The running job chooses N itself (the total may shrink). */
@@ -88,7 +88,7 @@ export class WholeShape {
     this.cancelRedraw();
     this.job?.cancel();
     this.job = null;
-    this.running_ = null;
+    this.runPromise = null;
     this.progress = null;
     this.jobId++;
     this.result = null;
@@ -107,8 +107,13 @@ export class WholeShape {
 
   /** Starts a run with the current options (or returns the one running); resolves when it ends. */
   run(): Promise<void> {
-    if (!this.running_) this.running_ = this.runJob().finally(() => (this.running_ = null));
-    return this.running_;
+    if (!this.runPromise) {
+      const run: Promise<void> = this.runJob().finally(() => {
+        if (this.runPromise === run) this.runPromise = null; // not a newer run's
+      });
+      this.runPromise = run;
+    }
+    return this.runPromise;
   }
 
   private async runJob(): Promise<void> {
@@ -366,7 +371,12 @@ export class WholeShape {
   /** Evaluates the result once (in the worker); resolves when the figures are shown (or it failed). */
   evaluate(): Promise<void> {
     if (!this.result || this.evaluation) return Promise.resolve();
-    this.evaluating ??= this.evaluateJob().finally(() => (this.evaluating = null));
+    if (!this.evaluating) {
+      const job: Promise<void> = this.evaluateJob().finally(() => {
+        if (this.evaluating === job) this.evaluating = null; // not a newer result's
+      });
+      this.evaluating = job;
+    }
     return this.evaluating;
   }
 

@@ -200,7 +200,7 @@ function pillStates(): Map<StageKey, PillState> {
     if (!viewer.surface) state = 'disabled';
     else if (group === 'mesh') state = 'ready';
     else if (!canCompute()) state = 'disabled';
-    else if (group === 'source') state = single.has(key) ? 'ready' : single.reply ? 'disabled' : 'pending';
+    else if (group === 'source') state = single.has(key) ? 'ready' : single.reply ? 'disabled' : single.busy ? 'running' : 'pending';
     else if (key === 'reconstruction') state = whole.evaluation ? 'ready' : whole.result ? 'pending' : whole.running ? 'disabled' : 'pending';
     else state = whole.result ? 'ready' : whole.running ? (key === 'separators' ? 'running' : 'pending') : 'pending';
     states.set(key, state);
@@ -214,7 +214,7 @@ function enter(key: StageKey): void {
   refresh();
   if (!canCompute()) return;
   const group = stageDef(key).group;
-  if (group === 'source' && !single.reply) void single.runRandom();
+  if (group === 'source' && !single.reply && !single.busy) void single.runRandom();
   if (group === 'shape') {
     // run() joins a run in progress.
     const computed = whole.result ? Promise.resolve() : whole.run();

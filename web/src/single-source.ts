@@ -20,10 +20,17 @@ export class SingleSource {
   reply: SeparatorReply | null = null;
   private latest = 0;
   private runs = 0;
+  /** Requests sent and not answered yet. */
+  private inFlight = 0;
   /** Bumped when the mesh changes, so late replies for the old one are dropped. */
   private generation = 0;
 
   constructor(private readonly ctx: StudioContext) {}
+
+  /** A run is on its way (entering a stage should wait for it rather than start another). */
+  get busy(): boolean {
+    return this.inFlight > 0;
+  }
 
   get source(): number | null {
     return this.reply?.separator.source ?? null;
@@ -61,6 +68,8 @@ export class SingleSource {
       viewer.setLayer('source', new SpheresLayer('Source vertex', surface.vertexPosition(source).toArray(), radius));
     }
     this.ctx.begin('computing stage 1…');
+    this.inFlight++;
+    this.ctx.progressed(); // the pills say it is computing
     try {
       const reply = await client.separator(source, changedOptions(this.ctx.options()));
       if (current()) this.show(reply);
@@ -69,6 +78,7 @@ export class SingleSource {
       this.clear();
       if (!(error instanceof WorkerError && error.kind === 'crash')) this.ctx.fail('Could not compute stage 1 (geodesic distance)', error);
     } finally {
+      this.inFlight--;
       this.ctx.end();
       if (current()) this.ctx.changed();
     }

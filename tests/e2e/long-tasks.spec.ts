@@ -3,11 +3,11 @@
  * 'longtask', over 50 ms each) are recorded through a whole-shape run on the Hand sample and written
  * to .deps/bench/page-long-tasks.json.
  *
- * Without a GPU (SwiftShader, as in CI) the compositor reads every WebGL frame back to the CPU on the
- * main thread (a `Commit` with `ReadPixels`) and waits for the software rasterizer, which shares the
- * cores with the worker: those waits are frame time, not the page's code. A Chromium trace splits
- * each long task into that wait and the rest, and the bound (200 ms, generous) is asserted on the
- * rest; the file keeps both.
+ * Wall time is not what the page's code costs here. Without a GPU (SwiftShader, as in CI) the
+ * compositor reads every WebGL frame back on the main thread (a `Commit` with `ReadPixels`) and waits
+ * for the software rasterizer, which shares the cores with the worker; and on a loaded machine the
+ * main thread also waits for a core. A Chromium trace gives each task's main-thread CPU time, which
+ * counts neither wait: the bound (200 ms, generous) is asserted on that. The file keeps all three.
  */
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -25,11 +25,13 @@ interface TraceEvent {
   tid: number;
   ts: number;
   dur?: number;
+  /** Thread (CPU) time, µs. */
+  tdur?: number;
   args?: { name?: string };
 }
 
-/** Long main-thread tasks of a trace: total ms and the ms of frame read-backs inside them. */
-function splitTasks(events: TraceEvent[]): Array<{ ms: number; readbackMs: number }> {
+/** Long main-thread tasks of a trace: wall ms, the ms of frame read-backs inside them, and CPU ms. */
+function splitTasks(events: TraceEvent[]): Array<{ ms: number; readbackMs: number; cpuMs: number }> {
   const names = new Map(events.filter((e) => e.name === 'thread_name').map((e) => [`${e.pid}:${e.tid}`, e.args?.name]));
   const main = events.filter((e) => e.ph === 'X' && names.get(`${e.pid}:${e.tid}`) === 'CrRendererMain');
   return main
@@ -37,7 +39,7 @@ function splitTasks(events: TraceEvent[]): Array<{ ms: number; readbackMs: numbe
     .map((task) => {
       const inside = (e: TraceEvent) => e.ts >= task.ts && e.ts + e.dur! <= task.ts + task.dur!;
       const readback = main.filter((e) => e.name === 'Commit' && inside(e)).reduce((sum, e) => sum + e.dur!, 0);
-      return { ms: task.dur! / 1000, readbackMs: readback / 1000 };
+      return { ms: task.dur! / 1000, readbackMs: readback / 1000, cpuMs: (task.tdur ?? task.dur!) / 1000 };
     });
 }
 
@@ -74,6 +76,7 @@ test('a whole-shape run keeps main-thread tasks short', async ({ page, browser }
     count: tasks.length,
     longestWithoutReadbackMs: round(Math.max(0, ...split.map((t) => t.ms - t.readbackMs))),
     longestReadbackMs: round(Math.max(0, ...split.map((t) => t.readbackMs))),
+    longestCpuMs: round(Math.max(0, ...split.map((t) => t.cpuMs))),
     mesh: 'hand.ply (10345 vertices, 20686 faces), n = 60',
     renderer,
     date: new Date().toISOString(),
@@ -81,6 +84,7 @@ test('a whole-shape run keeps main-thread tasks short', async ({ page, browser }
   const dir = path.join(repoRoot, '.deps', 'bench');
   mkdirSync(dir, { recursive: true });
   writeFileSync(path.join(dir, 'page-long-tasks.json'), `${JSON.stringify(record, null, 2)}\n`);
-  const detail = split.map((t) => `${round(t.ms)} (${round(t.readbackMs)} read-back)`).join(', ');
-  expect(record.longestWithoutReadbackMs, `long tasks in ms: ${detail}`).toBeLessThan(BOUND_MS);
+  const detail = split.map((t) => `${round(t.ms)} (${round(t.readbackMs)} read-back, ${round(t.cpuMs)} CPU)`).join(', ');
+  expect(split.every((t) => t.cpuMs <= t.ms + 1), 'the trace has thread times').toBe(true);
+  expect(record.longestCpuMs, `long tasks in ms: ${detail}`).toBeLessThan(BOUND_MS);
 });

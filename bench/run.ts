@@ -222,13 +222,27 @@ function median(values: number[]): number | null {
   return sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
 }
 
+/** The page's responsiveness as tests/e2e/long-tasks.spec.ts last measured it, as one paragraph (null if never run). */
+function pageLongTasks(): string | null {
+  const file = path.join(repoRoot, '.deps', 'bench', 'page-long-tasks.json');
+  if (!existsSync(file)) return null;
+  const r = JSON.parse(readFileSync(file, 'utf8')) as {
+    longestMs: number; longestCpuMs: number; longestReadbackMs: number; count: number; mesh: string; renderer: string; date: string;
+  };
+  return `Page (from \`tests/e2e/long-tasks.spec.ts\`, ${r.date}): during a whole-shape run on ${r.mesh}, the longest main-thread task `
+    + `took ${r.longestCpuMs} ms of CPU (${r.longestMs} ms wall, of which up to ${r.longestReadbackMs} ms waiting for a frame to be read back `
+    + `from ${r.renderer}); ${r.count} tasks over 50 ms.`;
+}
+
 function markdown(rows: Row[], config: Config, machine: string, meshesDone: number): string {
+  const page = pageLongTasks();
   const withRatio = config.methods.includes('cscd') && config.methods.includes('msls');
   const lines: string[] = [
     `# Curve-skeleton bench: ${config.methods.join(', ')}`,
     '',
     machine,
     '',
+    ...(page ? [page, ''] : []),
     `Options: \`npm run bench${config.argv.length ? ` -- ${config.argv.join(' ')}` : ''}\`; methods ${config.methods.join(', ')}; `
       + `${config.meshes.length} meshes${config.quick ? ' (quick)' : ''}; timeout ${config.timeout} s per method and mesh.`
       + (meshesDone < config.meshes.length ? ` **Partial: ${meshesDone} of ${config.meshes.length} meshes done.**` : ''),

@@ -6,7 +6,7 @@ import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { defaultOptions } from '../../lib/core/options.ts';
 import { sharedMesh } from '../paths.ts';
-import { icosphere, readMesh } from './support/meshes.ts';
+import { icosphere, offText, readMesh } from './support/meshes.ts';
 import { cscd } from './support/cli.ts';
 
 const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-separator-'));
@@ -119,12 +119,9 @@ describe('cscd separator', () => {
 
   it('reports a source without a separator as a status, not an error: exit 0, JSON, one warning', () => {
     // A sphere has no feature for a loop to separate: the loop must shrink to a point (or fail earlier).
-    const { positions, triangles } = icosphere(3);
-    const lines = ['OFF', `${positions.length / 3} ${triangles.length / 3} 0`];
-    for (let i = 0; i < positions.length; i += 3) lines.push(Array.from(positions.subarray(i, i + 3)).join(' '));
-    for (let i = 0; i < triangles.length; i += 3) lines.push(`3 ${Array.from(triangles.subarray(i, i + 3)).join(' ')}`);
+    const mesh = icosphere(3);
     const sphere = path.join(tmp, 'sphere.off');
-    writeFileSync(sphere, `${lines.join('\n')}\n`);
+    writeFileSync(sphere, offText(mesh));
 
     const result = cscd('separator', sphere, '--source', '0');
     expect(result.status).toBe(0);
@@ -132,7 +129,7 @@ describe('cscd separator', () => {
     expect(Object.keys(failed)).toEqual(KEYS);
     expect(['no-cut-locus', 'no-target', 'trace-failed', 'degenerate-loop', 'shorten-failed']).toContain(failed.status);
     expect(failed.message).not.toBe('');
-    expect(failed.distance).toHaveLength(positions.length / 3);
+    expect(failed.distance).toHaveLength(mesh.positions.length / 3);
     expect(failed.loop).toEqual([]);
     expect(result.stderr).toBe(`cscd: warning: ${sphere}: no separator from source 0: ${failed.status} (${failed.message})\n`);
   });

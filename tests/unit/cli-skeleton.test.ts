@@ -6,7 +6,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { defaultOptions } from '../../lib/core/options.ts';
 import { parseSkeleton, spanningForest, type SkeletonJson } from '../../lib/io/skeleton.ts';
 import { sharedMesh } from '../paths.ts';
-import { icosphere } from './support/meshes.ts';
+import { icosphere, offText } from './support/meshes.ts';
 import { cscd } from './support/cli.ts';
 
 const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-skeleton-'));
@@ -105,12 +105,9 @@ describe('cscd skeleton', () => {
   }, 240_000);
 
   it('writes a one-node skeleton for a sphere (no separator kept), with a warning and exit code 0', () => {
-    const { positions, triangles } = icosphere(3);
-    const lines = ['OFF', `${positions.length / 3} ${triangles.length / 3} 0`];
-    for (let i = 0; i < positions.length; i += 3) lines.push(Array.from(positions.subarray(i, i + 3)).join(' '));
-    for (let i = 0; i < triangles.length; i += 3) lines.push(`3 ${Array.from(triangles.subarray(i, i + 3)).join(' ')}`);
+    const mesh = icosphere(3);
     const sphere = path.join(tmp, 'sphere.off');
-    writeFileSync(sphere, `${lines.join('\n')}\n`);
+    writeFileSync(sphere, offText(mesh));
 
     const result = cscd('skeleton', sphere, '--n', '10');
     expect(result.status).toBe(0);
@@ -120,7 +117,7 @@ describe('cscd skeleton', () => {
     expect(one.edges).toEqual([]);
     expect(one.separators).toEqual([]);
     expect(one.stats).toMatchObject({ n: 10, packed: 0, cycles: 0 });
-    expect(one.vertexToNode).toEqual(new Array(positions.length / 3).fill(0));
+    expect(one.vertexToNode).toEqual(new Array(mesh.positions.length / 3).fill(0));
     // The centre of the unit sphere, and its radius.
     expect(Math.hypot(...one.nodes[0])).toBeLessThan(1e-6);
     expect(one.radii[0]).toBeCloseTo(1, 2);

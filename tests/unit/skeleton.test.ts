@@ -142,17 +142,9 @@ describe('skeleton shape and bookkeeping', () => {
     }
   });
 
-  it('has a leaf in each finger and the wrist of the hand', () => {
-    const mesh = readMesh(sharedMesh('hand.ply'));
-    const surface = core.openSurface(mesh);
-    const skeleton = surface.skeleton();
-    // The six extremities of a hand: five fingertips and the wrist.
-    expectOneLeafPerTip(mesh, skeleton, extremities(surface, 6), 0.15 * surface.facts.bboxDiagonal);
-    surface.dispose();
-  });
-
-  it('has leaves in the hands, feet, head and tail of the armadillo', () => {
-    const mesh = readMesh(sharedMesh('armadillo.ply'));
+  // Six extremities each: the hand's five fingertips and wrist; the armadillo's hands, feet, head and tail.
+  it.each(['hand.ply', 'armadillo.ply'])('has a leaf at each of the six extremities of %s', (file) => {
+    const mesh = readMesh(sharedMesh(file));
     const surface = core.openSurface(mesh);
     const skeleton = surface.skeleton();
     expectOneLeafPerTip(mesh, skeleton, extremities(surface, 6), 0.15 * surface.facts.bboxDiagonal);

@@ -108,6 +108,14 @@ export function capsule(L: number, r: number, around: number): MeshArrays {
   return { positions: Float64Array.from(positions), triangles: Uint32Array.from(triangles) };
 }
 
+/** The mesh as the text of an OFF file, for CLI tests that need a file. */
+export function offText({ positions, triangles }: MeshArrays): string {
+  const lines = ['OFF', `${positions.length / 3} ${triangles.length / 3} 0`];
+  for (let i = 0; i < positions.length; i += 3) lines.push(Array.from(positions.subarray(i, i + 3)).join(' '));
+  for (let i = 0; i < triangles.length; i += 3) lines.push(`3 ${Array.from(triangles.subarray(i, i + 3)).join(' ')}`);
+  return `${lines.join('\n')}\n`;
+}
+
 function normalize(p: number[]): number[] {
   const n = Math.hypot(p[0], p[1], p[2]);
   return p.map((x) => x / n);

@@ -158,34 +158,8 @@ export type LayerHue = keyof typeof LAYER_HUES;
  * (the dimmed colormap and dimmed layers are greyish and stay below the saturation bound).
  */
 export async function colorCensus(page: Page, minSaturation = 0.6): Promise<Record<LayerHue, number>> {
-  return page.evaluate(
-    ({ hues, minSaturation }) => {
-      const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="viewport-canvas"]');
-      if (!canvas) throw new Error('no canvas');
-      const copy = document.createElement('canvas');
-      copy.width = canvas.width;
-      copy.height = canvas.height;
-      const ctx = copy.getContext('2d', { willReadFrequently: true })!;
-      ctx.drawImage(canvas, 0, 0);
-      const data = ctx.getImageData(0, 0, copy.width, copy.height).data;
-      const names = Object.keys(hues);
-      const counts: Record<string, number> = Object.fromEntries(names.map((n) => [n, 0]));
-      for (let i = 0; i < data.length; i += 4) {
-        if (data[i + 3] < 250) continue;
-        const r = data[i] / 255, g = data[i + 1] / 255, b = data[i + 2] / 255;
-        const max = Math.max(r, g, b), min = Math.min(r, g, b);
-        if (max < 0.3 || (max - min) / max < minSaturation) continue;
-        const d = max - min;
-        let h = max === r ? (g - b) / d : max === g ? 2 + (b - r) / d : 4 + (r - g) / d;
-        h = ((h * 60) % 360 + 360) % 360;
-        for (const name of names) {
-          if ((hues as Record<string, number[][]>)[name].some(([lo, hi]) => h >= lo && h < hi)) counts[name]++;
-        }
-      }
-      return counts as Record<string, number>;
-    },
-    { hues: LAYER_HUES as unknown as Record<string, number[][]>, minSaturation },
-  ) as Promise<Record<LayerHue, number>>;
+  const { counts } = await hueCensus(page, LAYER_HUES as unknown as Record<string, [number, number][]>, { minSaturation, minAlpha: 250 / 255 });
+  return counts as Record<LayerHue, number>;
 }
 
 export interface HueCensus {

@@ -1,6 +1,6 @@
 // The CSCD core for TypeScript callers (CLI, worker, tests): a thin layer over the embind module that
 // turns its error strings into CoreError and frees WASM objects through dispose().
-import createCscdModule, { type CscdModule, type PipelineHandle, type SurfaceHandle } from '../../build/wasm/cscd.js';
+import createCscdModule, { type CscdModule, type CscdModuleOptions, type PipelineHandle, type SurfaceHandle } from '../../build/wasm/cscd.js';
 import {
   CoreError,
   type Core,
@@ -20,24 +20,45 @@ import {
 export * from './types.ts';
 export { defaultOptions } from './options.ts';
 
-function unwrap<T>(result: T | string): T {
-  if (typeof result === 'string') throw new CoreError(result);
-  return result;
+/** Turns the core's error strings into CoreError; `unwrap(x)` returns x when it is not an error. */
+type Unwrap = <T>(result: T | string) => T;
+
+/** WebAssembly memory pages are 64 KiB. */
+const PAGE_BYTES = 65536;
+/** The core's own maximum (wasm/CMakeLists.txt -sMAXIMUM_MEMORY) and its initial size (-sINITIAL_MEMORY). */
+const CORE_MAXIMUM_MB = 4096;
+const CORE_INITIAL_MB = 64;
+
+/**
+ * The core reports a failed allocation (std::bad_alloc) as a string starting "out of memory"; it gets
+ * the limit that was hit and what to do about it.
+ */
+function unwrapper(memoryLimitMB: number): Unwrap {
+  return <T>(result: T | string): T => {
+    if (typeof result !== 'string') return result;
+    if (result.startsWith('out of memory') || result.includes('bad_alloc')) {
+      throw new CoreError(`out of memory: the mesh needs more than ${memoryLimitMB} MB; decimate it to fewer faces and try again`);
+    }
+    throw new CoreError(result);
+  };
 }
 
 class WasmPipeline implements Pipeline {
   private handle: PipelineHandle | null;
 
-  constructor(handle: PipelineHandle) {
+  constructor(
+    handle: PipelineHandle,
+    private readonly unwrap: Unwrap,
+  ) {
     this.handle = handle;
   }
 
   step(sources: number): PipelineProgress {
-    return unwrap(this.live().step(sources)) as PipelineProgress;
+    return this.unwrap(this.live().step(sources)) as PipelineProgress;
   }
 
   finish(): Skeleton {
-    return unwrap(this.live().finish()) as Skeleton;
+    return this.unwrap(this.live().finish()) as Skeleton;
   }
 
   dispose(): void {
@@ -58,21 +79,22 @@ class WasmSurface implements Surface {
   constructor(
     handle: SurfaceHandle,
     private readonly module: CscdModule,
+    private readonly unwrap: Unwrap,
   ) {
     this.handle = handle;
     this.facts = handle.facts() as MeshFacts;
   }
 
   distanceFromVertex(vertex: number): Float64Array {
-    return unwrap(this.live().distanceFromVertex(vertex));
+    return this.unwrap(this.live().distanceFromVertex(vertex));
   }
 
   exactDistanceFromVertex(vertex: number): Float64Array {
-    return unwrap(this.live().exactDistanceFromVertex(vertex));
+    return this.unwrap(this.live().exactDistanceFromVertex(vertex));
   }
 
   separator(source: number, options: Partial<Options> = {}): Separator {
-    return unwrap(this.live().separator(source, options)) as Separator;
+    return this.unwrap(this.live().separator(source, options)) as Separator;
   }
 
   pipeline(options: Partial<Options> = {}): Pipeline {
@@ -80,9 +102,9 @@ class WasmSurface implements Surface {
     const error = handle.error();
     if (error) {
       handle.delete();
-      throw new CoreError(error);
+      this.unwrap(error);
     }
-    return new WasmPipeline(handle);
+    return new WasmPipeline(handle, this.unwrap);
   }
 
   skeleton(options: Partial<Options> = {}): Skeleton {
@@ -97,7 +119,7 @@ class WasmSurface implements Surface {
   distanceFromPoints(points: SurfacePoint[]): Float64Array {
     const faces = Uint32Array.from(points, (p) => p.face);
     const barycentric = Float64Array.from(points.flatMap((p) => p.barycentric));
-    return unwrap(this.live().distanceFromPoints(faces, barycentric));
+    return this.unwrap(this.live().distanceFromPoints(faces, barycentric));
   }
 
   dispose(): void {
@@ -112,15 +134,18 @@ class WasmSurface implements Surface {
 }
 
 class WasmCore implements Core {
-  constructor(private readonly module: CscdModule) {}
+  constructor(
+    private readonly module: CscdModule,
+    private readonly unwrap: Unwrap,
+  ) {}
 
   inspect(mesh: MeshArrays): MeshFacts {
-    return unwrap(this.module.inspect(mesh.positions, mesh.triangles) as MeshFacts | string);
+    return this.unwrap(this.module.inspect(mesh.positions, mesh.triangles) as MeshFacts | string);
   }
 
   evaluate(mesh: MeshArrays, skeleton: SkeletonInput): Evaluation {
     const result = this.module.evaluate(mesh.positions, mesh.triangles, skeleton.nodes, skeleton.edges, skeleton.radii ?? null);
-    return unwrap(result) as Evaluation;
+    return this.unwrap(result) as Evaluation;
   }
 
   openSurface(mesh: MeshArrays): Surface {
@@ -128,19 +153,37 @@ class WasmCore implements Core {
     const error = handle.error();
     if (error) {
       handle.delete();
-      throw new CoreError(error);
+      this.unwrap(error);
     }
-    return new WasmSurface(handle, this.module);
+    return new WasmSurface(handle, this.module, this.unwrap);
   }
 }
 
+export interface CoreSettings {
+  /**
+   * Most memory the core may use, in MB (at least 64, at most 4096, the default). Beyond it an
+   * allocation fails and the call throws a CoreError "out of memory: …"; the memory is not returned to
+   * the system afterwards (WebAssembly memory never shrinks), so a caller that needs it back starts a
+   * new core.
+   */
+  memoryLimitMB?: number;
+}
+
 /** Instantiates the WASM core from the bytes of build/wasm/cscd.wasm (fetched by the caller). */
-export async function createCore(wasmBinary: ArrayBuffer | Uint8Array): Promise<Core> {
-  const module = await createCscdModule({
+export async function createCore(wasmBinary: ArrayBuffer | Uint8Array, settings: CoreSettings = {}): Promise<Core> {
+  const limit = Math.round(settings.memoryLimitMB ?? CORE_MAXIMUM_MB);
+  if (!(limit >= CORE_INITIAL_MB && limit <= CORE_MAXIMUM_MB)) {
+    throw new RangeError(`memoryLimitMB must be between ${CORE_INITIAL_MB} and ${CORE_MAXIMUM_MB}, got ${settings.memoryLimitMB}`);
+  }
+  const pages = (mb: number) => (mb * 1024 * 1024) / PAGE_BYTES;
+  const moduleSettings: CscdModuleOptions & { wasmMemory: WebAssembly.Memory } = {
     wasmBinary,
+    // The module is linked with -sIMPORTED_MEMORY and takes this memory; its maximum is the cap.
+    wasmMemory: new WebAssembly.Memory({ initial: pages(CORE_INITIAL_MB), maximum: pages(limit) }),
     // The module has no file system; anything it prints is a library diagnostic, kept off stdout.
     print: (text) => console.warn(`[cscd core] ${text}`),
     printErr: (text) => console.warn(`[cscd core] ${text}`),
-  });
-  return new WasmCore(module);
+  };
+  const module = await createCscdModule(moduleSettings);
+  return new WasmCore(module, unwrapper(limit));
 }

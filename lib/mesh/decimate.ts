@@ -142,6 +142,7 @@ export class Decimator {
   private readonly scale: number;
   private readonly entry = new Float64Array(5);
   private readonly best = new Float64Array(4);
+  private readonly moved = new Float64Array(9);
 
   constructor(mesh: MeshArrays, targetFaces: number) {
     const n = mesh.positions.length / 3;
@@ -301,48 +302,46 @@ export class Decimator {
     addPlane(this.quadrics, 10 * b, nx, ny, nz, d, weight);
   }
 
-  /** Error of position (x, y, z) under the sum of the quadrics of a and b. */
-  private error(a: number, b: number, x: number, y: number, z: number): number {
+  /** Makes (x, y, z) this.best when its error under the quadrics of a and b is lower. (No closures in the hot path.) */
+  private consider(a: number, b: number, x: number, y: number, z: number): void {
     const q = this.quadrics, i = 10 * a, j = 10 * b;
-    const c = (k: number) => q[i + k] + q[j + k];
-    const e = c(0) * x * x + 2 * c(1) * x * y + 2 * c(2) * x * z + 2 * c(3) * x
-      + c(4) * y * y + 2 * c(5) * y * z + 2 * c(6) * y + c(7) * z * z + 2 * c(8) * z + c(9);
-    return Math.max(0, e);
+    const e = (q[i] + q[j]) * x * x + 2 * (q[i + 1] + q[j + 1]) * x * y + 2 * (q[i + 2] + q[j + 2]) * x * z
+      + 2 * (q[i + 3] + q[j + 3]) * x + (q[i + 4] + q[j + 4]) * y * y + 2 * (q[i + 5] + q[j + 5]) * y * z
+      + 2 * (q[i + 6] + q[j + 6]) * y + (q[i + 7] + q[j + 7]) * z * z + 2 * (q[i + 8] + q[j + 8]) * z + (q[i + 9] + q[j + 9]);
+    const cost = Math.max(0, e);
+    const best = this.best;
+    if (cost < best[3]) {
+      best[0] = x;
+      best[1] = y;
+      best[2] = z;
+      best[3] = cost;
+    }
   }
 
   /** Where a and b should meet and at what cost, into this.best (x, y, z, cost). */
   private placement(a: number, b: number): void {
-    const p = this.positions, best = this.best;
-    const choose = (x: number, y: number, z: number) => {
-      const cost = this.error(a, b, x, y, z);
-      if (cost < best[3]) {
-        best[0] = x;
-        best[1] = y;
-        best[2] = z;
-        best[3] = cost;
-      }
-    };
-    best[3] = Infinity;
+    const p = this.positions;
+    this.best[3] = Infinity;
     // A boundary vertex stays where it is when an interior neighbour joins it.
     if (this.boundary[a] !== this.boundary[b]) {
       const keep = this.boundary[a] ? a : b;
-      choose(p[3 * keep], p[3 * keep + 1], p[3 * keep + 2]);
+      this.consider(a, b, p[3 * keep], p[3 * keep + 1], p[3 * keep + 2]);
       return;
     }
     const q = this.quadrics, i = 10 * a, j = 10 * b;
-    const c = (k: number) => q[i + k] + q[j + k];
-    const a00 = c(0), a01 = c(1), a02 = c(2), a11 = c(4), a12 = c(5), a22 = c(7);
-    const b0 = -c(3), b1 = -c(6), b2 = -c(8);
+    const a00 = q[i] + q[j], a01 = q[i + 1] + q[j + 1], a02 = q[i + 2] + q[j + 2];
+    const a11 = q[i + 4] + q[j + 4], a12 = q[i + 5] + q[j + 5], a22 = q[i + 7] + q[j + 7];
+    const b0 = -(q[i + 3] + q[j + 3]), b1 = -(q[i + 6] + q[j + 6]), b2 = -(q[i + 8] + q[j + 8]);
     const m00 = a11 * a22 - a12 * a12, m01 = a02 * a12 - a01 * a22, m02 = a01 * a12 - a02 * a11;
     const det = a00 * m00 + a01 * m01 + a02 * m02;
     const norm = Math.max(Math.abs(a00), Math.abs(a11), Math.abs(a22));
     if (Math.abs(det) > SINGULAR_DETERMINANT * norm * norm * norm) {
       const m11 = a00 * a22 - a02 * a02, m12 = a01 * a02 - a00 * a12, m22 = a00 * a11 - a01 * a01;
-      choose((m00 * b0 + m01 * b1 + m02 * b2) / det, (m01 * b0 + m11 * b1 + m12 * b2) / det, (m02 * b0 + m12 * b1 + m22 * b2) / det);
+      this.consider(a, b, (m00 * b0 + m01 * b1 + m02 * b2) / det, (m01 * b0 + m11 * b1 + m12 * b2) / det, (m02 * b0 + m12 * b1 + m22 * b2) / det);
     }
-    choose(p[3 * a], p[3 * a + 1], p[3 * a + 2]);
-    choose(p[3 * b], p[3 * b + 1], p[3 * b + 2]);
-    choose((p[3 * a] + p[3 * b]) / 2, (p[3 * a + 1] + p[3 * b + 1]) / 2, (p[3 * a + 2] + p[3 * b + 2]) / 2);
+    this.consider(a, b, p[3 * a], p[3 * a + 1], p[3 * a + 2]);
+    this.consider(a, b, p[3 * b], p[3 * b + 1], p[3 * b + 2]);
+    this.consider(a, b, (p[3 * a] + p[3 * b]) / 2, (p[3 * a + 1] + p[3 * b + 1]) / 2, (p[3 * a + 2] + p[3 * b + 2]) / 2);
   }
 
   private pushEdge(a: number, b: number): void {
@@ -389,16 +388,22 @@ export class Decimator {
 
   /** Whether moving the faces of v (but not those on a-b) to put v at (x, y, z) keeps them facing the same way. */
   private keepsNormals(v: number, a: number, b: number, x: number, y: number, z: number): boolean {
-    const p = this.positions, t = this.triangles;
+    const p = this.positions, t = this.triangles, moved = this.moved;
     for (const f of this.vertexFaces[v]) {
       const i = t[3 * f], j = t[3 * f + 1], k = t[3 * f + 2];
       if ((i === a || j === a || k === a) && (i === b || j === b || k === b)) continue;
-      const at = (u: number, c: number) => (u === v ? (c === 0 ? x : c === 1 ? y : z) : p[3 * u + c]);
       const ux = p[3 * j] - p[3 * i], uy = p[3 * j + 1] - p[3 * i + 1], uz = p[3 * j + 2] - p[3 * i + 2];
       const wx = p[3 * k] - p[3 * i], wy = p[3 * k + 1] - p[3 * i + 1], wz = p[3 * k + 2] - p[3 * i + 2];
       const ox = uy * wz - uz * wy, oy = uz * wx - ux * wz, oz = ux * wy - uy * wx;
-      const Ux = at(j, 0) - at(i, 0), Uy = at(j, 1) - at(i, 1), Uz = at(j, 2) - at(i, 2);
-      const Wx = at(k, 0) - at(i, 0), Wy = at(k, 1) - at(i, 1), Wz = at(k, 2) - at(i, 2);
+      // The face's corners with v at (x, y, z).
+      for (let c = 0; c < 3; c++) {
+        const u = t[3 * f + c];
+        moved[3 * c] = u === v ? x : p[3 * u];
+        moved[3 * c + 1] = u === v ? y : p[3 * u + 1];
+        moved[3 * c + 2] = u === v ? z : p[3 * u + 2];
+      }
+      const Ux = moved[3] - moved[0], Uy = moved[4] - moved[1], Uz = moved[5] - moved[2];
+      const Wx = moved[6] - moved[0], Wy = moved[7] - moved[1], Wz = moved[8] - moved[2];
       const nx = Uy * Wz - Uz * Wy, ny = Uz * Wx - Ux * Wz, nz = Ux * Wy - Uy * Wx;
       const before = Math.hypot(ox, oy, oz), after = Math.hypot(nx, ny, nz);
       if (after <= 1e-12 * (Ux * Ux + Uy * Uy + Uz * Uz + Wx * Wx + Wy * Wy + Wz * Wz)) return false;
@@ -411,7 +416,7 @@ export class Decimator {
   private collapse(a: number, b: number): boolean {
     if (this.edgeFacesIfLinkHolds(a, b) < 0) return false;
     this.placement(a, b);
-    const [x, y, z] = this.best;
+    const x = this.best[0], y = this.best[1], z = this.best[2];
     if (!this.keepsNormals(a, a, b, x, y, z) || !this.keepsNormals(b, a, b, x, y, z)) return false;
 
     const t = this.triangles;
@@ -432,7 +437,10 @@ export class Decimator {
       if (this.faceAlive[f]) continue;
       for (let k = 0; k < 3; k++) {
         const v = t[3 * f + k];
-        if (v !== a && v !== b) this.vertexFaces[v] = this.vertexFaces[v].filter((g) => g !== f);
+        if (v !== a && v !== b) {
+          const list = this.vertexFaces[v];
+          list.splice(list.indexOf(f), 1);
+        }
       }
     }
     this.vertexFaces[a] = faces;

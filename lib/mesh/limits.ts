@@ -1,0 +1,33 @@
+/**
+ * How large a mesh the geodesic solver handles in reasonable time, from the measurements in
+ * docs/limits.md (scripts/measure-limits.ts): shared by the page (the decimation offer) and the CLI
+ * (its warning), so both say the same.
+ */
+
+/** Above this many faces the page offers to decimate and the CLI warns: the solver then takes over ~6 s. */
+export const FACE_LIMIT = 200_000;
+
+/** The face count the page offers to decimate to (about 2 s to open the solver). */
+export const DECIMATE_TARGET = 100_000;
+
+// Least-squares fit of log(seconds) against log(vertices) over the measured tori of 50K to 1M faces:
+// seconds = SOLVER_FIT_A * vertices^SOLVER_FIT_B (within 35% of every measurement).
+const SOLVER_FIT_A = 8.0e-8;
+const SOLVER_FIT_B = 1.58;
+
+/** Expected time, in seconds, to open the geodesic solver (heat-method prefactorisation) on a mesh of `vertices` vertices. */
+export function expectedSolverSeconds(vertices: number): number {
+  return SOLVER_FIT_A * Math.pow(vertices, SOLVER_FIT_B);
+}
+
+/** "about 50 s", "about 3 min": a rough duration for a message. */
+export function aboutDuration(seconds: number): string {
+  if (seconds < 90) return `about ${Math.max(1, Math.round(seconds))} s`;
+  return `about ${Math.round(seconds / 60)} min`;
+}
+
+/** The warning for a mesh above FACE_LIMIT, or null (the page's offer and the CLI's warning). */
+export function sizeWarning(faces: number, vertices: number): string | null {
+  if (faces <= FACE_LIMIT) return null;
+  return `this mesh has ${faces} faces; preparing the geodesic solver takes ${aboutDuration(expectedSolverSeconds(vertices))}`;
+}

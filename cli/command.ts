@@ -1,9 +1,11 @@
 /** What every CLI command shares: its description for help and parsing, errors, mesh input. */
 import { readFile } from 'node:fs/promises';
 import { loadCoreNode } from '../lib/core/node.ts';
-import type { Core } from '../lib/core/types.ts';
+import type { Core, MeshArrays, Surface } from '../lib/core/types.ts';
 import { parseMesh, type ParsedMesh } from '../lib/io/index.ts';
 import { repairMesh } from '../lib/io/repair.ts';
+import { decimate } from '../lib/mesh/decimate.ts';
+import { DECIMATE_TARGET, FACE_LIMIT, sizeWarning } from '../lib/mesh/limits.ts';
 
 export interface OptionSpec {
   type: 'string' | 'boolean';
@@ -73,4 +75,35 @@ export async function readMesh(file: string, { printWarnings = true } = {}): Pro
     for (const repair of repairs) process.stderr.write(`cscd: repaired: ${repair}\n`);
   }
   return { ...parsed, ...mesh, repairs, vertexMap };
+}
+
+/** --decimate K, for the commands that take it (the page's "Decimate to K faces"). */
+export const decimateOption: OptionSpec = {
+  type: 'string',
+  value: 'K',
+  description: `decimate the mesh to about K faces first (quadric edge collapse; genus, components and holes kept); advised above ${FACE_LIMIT} faces`,
+};
+
+/**
+ * The mesh decimated to `--decimate K` faces when it has more (said on stderr), else as it is;
+ * `decimatedFrom` is the face count before, or null.
+ */
+export function decimateIfAsked<M extends MeshArrays>(mesh: M, values: OptionValues, file: string): M & { decimatedFrom: number | null } {
+  if (values.decimate === undefined) return { ...mesh, decimatedFrom: null };
+  const target = Number(values.decimate);
+  if (!Number.isInteger(target) || target < 4) throw new UsageError(`--decimate must be a whole number of faces (at least 4), got '${String(values.decimate)}'`);
+  const faces = mesh.triangles.length / 3;
+  if (faces <= target) return { ...mesh, decimatedFrom: null };
+  const started = performance.now();
+  const decimated = decimate(mesh, target);
+  const seconds = ((performance.now() - started) / 1000).toFixed(1);
+  process.stderr.write(`cscd: decimated ${file} from ${faces} to ${decimated.triangles.length / 3} faces in ${seconds} s\n`);
+  return { ...mesh, ...decimated, decimatedFrom: faces };
+}
+
+/** Opens the geodesic solver, first warning on stderr when the mesh is above the size limit (lib/mesh/limits.ts). */
+export async function openSolver(mesh: MeshArrays, file: string): Promise<Surface> {
+  const warning = sizeWarning(mesh.triangles.length / 3, mesh.positions.length / 3);
+  if (warning) process.stderr.write(`cscd: warning: ${file}: ${warning} (--decimate ${DECIMATE_TARGET} makes it faster)\n`);
+  return (await getCore()).openSurface(mesh);
 }

@@ -1,5 +1,5 @@
 import { writeFile } from 'node:fs/promises';
-import { UsageError, getCore, readMesh, type Command } from '../command.ts';
+import { UsageError, openSolver, readMesh, type Command } from '../command.ts';
 
 export const distance: Command = {
   name: 'distance',
@@ -15,7 +15,7 @@ export const distance: Command = {
     // Vertices are numbered as in the file, in and out, even when the repair renumbered them.
     const source = parseVertex(String(options.source), mesh.vertexMap.length);
     if (mesh.vertexMap[source] < 0) throw new UsageError(`--source ${source} is a vertex used by no face, which the repair removed`);
-    const surface = (await getCore()).openSurface(mesh);
+    const surface = await openSolver(mesh, file);
     let json: string;
     try {
       const distance = surface.distanceFromVertex(mesh.vertexMap[source]);

@@ -2,7 +2,7 @@ import { writeFile } from 'node:fs/promises';
 import path from 'node:path';
 import type { Skeleton } from '../../lib/core/types.ts';
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
-import { UsageError, getCore, readMesh, type Command, type OptionValues } from '../command.ts';
+import { UsageError, decimateIfAsked, decimateOption, openSolver, readMesh, type Command, type OptionValues } from '../command.ts';
 import { optionFlagSpecs, optionsFromFlags } from './separator.ts';
 
 /** Sources per pipeline step: small enough for a lively progress line, the step cost is one JS/WASM call. */
@@ -47,6 +47,7 @@ export const skeleton: Command = {
   args: ['<mesh>'],
   options: {
     ...optionFlagSpecs(),
+    decimate: decimateOption,
     format: { type: 'string', value: SKELETON_FORMATS.join('|'), description: 'output format (default: from the --out extension, else json)' },
     out: { type: 'string', value: 'FILE', description: 'write the skeleton to FILE instead of stdout' },
     verbose: { type: 'boolean', short: 'v', description: 'print the summary line on stderr even when it is not a terminal' },
@@ -60,15 +61,14 @@ export const skeleton: Command = {
   async run([file], values) {
     const options = optionsFromFlags(values);
     const format = outputFormat(values);
-    const mesh = await readMesh(file);
-    const core = await getCore();
+    const mesh = decimateIfAsked(await readMesh(file), values, file);
     const tty = process.stderr.isTTY === true;
     const progress = new ProgressLine();
     const name = path.basename(file);
 
     const started = performance.now();
     let result: Skeleton;
-    const surface = core.openSurface(mesh);
+    const surface = await openSolver(mesh, file);
     try {
       const pipeline = surface.pipeline(options);
       try {

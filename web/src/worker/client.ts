@@ -3,14 +3,18 @@
  *
  * When the worker dies or reports a crash (WASM abort), every pending request is rejected with a
  * WorkerError of kind `crash`, the worker is replaced and the last successfully opened mesh is re-opened in
- * the new one from bytes kept here. Requests made meanwhile queue behind that re-open.
+ * the new one from what is kept here (the file's bytes, or the decimated mesh's arrays); re-opening
+ * is cheap, since the geodesic solver is only opened when a request needs it. Requests made meanwhile
+ * queue behind that re-open. After an out-of-memory error (kind `memory`) the worker is replaced the
+ * same way, since WebAssembly memory never shrinks.
  *
- * A skeleton run is a job that can be cancelled: the worker stops it between two steps; when it has
- * not answered within CANCEL_GRACE_MS (a step that takes long or hangs), the worker is replaced the
- * same way, without counting as a crash.
+ * Every computing request can be cancelled (`cancelRunning`, or a job's `cancel`): the worker stops it
+ * at its next step; when it has not answered within CANCEL_GRACE_MS (a step that takes long, such as
+ * opening the geodesic solver, or hangs), the worker is replaced the same way, without counting as a crash.
  */
 import type { Options } from '../../../lib/core/types.ts';
 import {
+  type DecimatedReply,
   type ErrorKind,
   type OpenedReply,
   type PipelineNews,
@@ -37,24 +41,37 @@ export interface ClientHooks {
   onProgress?(event: ProgressEvent): void;
   /** The worker died: `message` says why; `restored` settles when the new worker has the mesh again. */
   onCrash?(message: string, restored: Promise<OpenedReply | null>): void;
-  /** The worker was replaced to stop a cancelled job that did not stop in time (not an error). */
+  /**
+   * The worker was replaced without a crash: to stop a cancelled job that did not stop in time, or
+   * to get its memory back after an out-of-memory error (which the request that hit it reports).
+   */
   onRestart?(restored: Promise<OpenedReply | null>): void;
 }
 
-/** A running skeleton computation. */
-export interface SkeletonJob {
-  readonly result: Promise<ReplyFor['skeleton']>;
+/** A running computation. */
+export interface Job<T> {
+  readonly result: Promise<T>;
   /**
-   * Stops it: `result` rejects with a WorkerError of kind `cancelled`. The worker stops between two
-   * steps; if it has not answered within CANCEL_GRACE_MS it is replaced.
+   * Stops it: `result` rejects with a WorkerError of kind `cancelled`. The worker stops at its next
+   * step; if it has not answered within CANCEL_GRACE_MS it is replaced.
    */
   cancel(): void;
 }
+export type SkeletonJob = Job<ReplyFor['skeleton']>;
 
 interface Pending {
   resolve(reply: never): void;
   reject(error: Error): void;
+  /** Requests that compute can be cancelled; open, restore and write are quick or must finish. */
+  cancellable: boolean;
 }
+
+/** What the worker needs to open the page's mesh again: the file, or the arrays of the decimated mesh. */
+type KeptMesh =
+  | { fileName: string; bytes: ArrayBuffer }
+  | { fileName: string; positions: Float64Array; triangles: Uint32Array; decimatedFrom: number };
+
+const UNCANCELLABLE = new Set<WorkerRequest['type']>(['open', 'restore', 'write']);
 
 /** A request without its id (distributed over the union, so each variant keeps its own fields). */
 type WithoutId<R> = R extends unknown ? Omit<R, 'id'> : never;
@@ -73,11 +90,18 @@ export class GeometryClient {
   /** Pipeline news listeners of running skeleton jobs, by request id. */
   private readonly news = new Map<number, (news: PipelineNews, event: ProgressEvent) => void>();
   /** The last mesh the worker opened successfully, to re-open after a crash. */
-  private current: { fileName: string; bytes: ArrayBuffer } | null = null;
+  private current: KeptMesh | null = null;
   private crashes = 0;
   private dead = false;
 
-  constructor(private readonly hooks: ClientHooks = {}) {
+  /**
+   * `memoryLimitMB` caps the WASM core's memory (a test hook, from the page's `?memoryLimitMB=`; the
+   * worker reads it from its name, which is all a module worker gets before its first message).
+   */
+  constructor(
+    private readonly hooks: ClientHooks = {},
+    private readonly memoryLimitMB: number | null = null,
+  ) {
     this.worker = this.spawn();
   }
 
@@ -87,6 +111,20 @@ export class GeometryClient {
     const reply = await this.request({ type: 'open', fileName, bytes, withArrays: true }, [bytes]);
     this.current = { fileName, bytes: kept };
     return reply;
+  }
+
+  /**
+   * Decimates the open mesh to about `targetFaces` faces in the worker, where it replaces the open
+   * mesh (and is what a restart re-opens).
+   */
+  decimate(targetFaces: number): Job<DecimatedReply> {
+    const fileName = this.current?.fileName ?? 'mesh';
+    const job = this.job({ type: 'decimate', targetFaces });
+    const result = job.result.then((reply) => {
+      this.current = { fileName, positions: reply.exactPositions, triangles: reply.triangles.slice(), decimatedFrom: reply.decimatedFrom };
+      return reply;
+    });
+    return { result, cancel: job.cancel };
   }
 
   distance(source: number): Promise<ReplyFor['distance']> {
@@ -105,19 +143,18 @@ export class GeometryClient {
   skeleton(options: Partial<Options>, onNews?: (news: PipelineNews, event: ProgressEvent) => void): SkeletonJob {
     const id = this.nextId;
     if (onNews) this.news.set(id, onNews);
-    const result = this.request({ type: 'skeleton', options }).finally(() => this.news.delete(id));
-    let cancelled = false;
-    const cancel = () => {
-      if (cancelled || !this.pending.has(id)) return;
-      cancelled = true;
-      this.news.delete(id);
-      this.worker.postMessage({ type: 'cancel', id });
-      const worker = this.worker;
-      setTimeout(() => {
-        if (this.pending.has(id) && this.worker === worker) this.replace('The computation was cancelled.', 'cancel');
-      }, CANCEL_GRACE_MS);
-    };
-    return { result, cancel };
+    const job = this.job({ type: 'skeleton', options });
+    return { result: job.result.finally(() => this.news.delete(id)), cancel: job.cancel };
+  }
+
+  /** Cancels every computing request sent and not answered yet (the page's Cancel). */
+  cancelRunning(): void {
+    for (const [id, pending] of this.pending) if (pending.cancellable) this.cancel(id);
+  }
+
+  /** Whether a computing request is waiting for its answer. */
+  get computing(): boolean {
+    return [...this.pending.values()].some((p) => p.cancellable);
   }
 
   /** The reconstruction error of the last skeleton the worker computed on the open mesh. */
@@ -141,17 +178,36 @@ export class GeometryClient {
     this.rejectAll('The geometry worker was stopped.');
   }
 
+  private job<B extends RequestBody>(body: B): Job<ReplyFor[B['type']]> {
+    const id = this.nextId;
+    return { result: this.request(body), cancel: () => this.cancel(id) };
+  }
+
   private request<B extends RequestBody>(body: B, transfer: Transferable[] = []): Promise<ReplyFor[B['type']]> {
     if (this.dead) return Promise.reject(new WorkerError('crash', 'The geometry worker is not running.'));
     const id = this.nextId++;
     return new Promise<ReplyFor[B['type']]>((resolve, reject) => {
-      this.pending.set(id, { resolve: resolve as (reply: never) => void, reject });
+      this.pending.set(id, { resolve: resolve as (reply: never) => void, reject, cancellable: !UNCANCELLABLE.has(body.type) });
       this.worker.postMessage({ ...body, id }, transfer);
     });
   }
 
+  /** Asks the worker to stop request `id`; replaces the worker when it has not within CANCEL_GRACE_MS. */
+  private cancel(id: number): void {
+    const pending = this.pending.get(id);
+    if (!pending?.cancellable) return;
+    pending.cancellable = false; // asked once
+    this.news.delete(id);
+    this.worker.postMessage({ type: 'cancel', id });
+    const worker = this.worker;
+    setTimeout(() => {
+      if (this.pending.has(id) && this.worker === worker) this.replace('The computation was cancelled.', 'cancel');
+    }, CANCEL_GRACE_MS);
+  }
+
   private spawn(): Worker {
-    const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'cscd-geometry' });
+    const name = this.memoryLimitMB ? `cscd-geometry memoryLimitMB=${this.memoryLimitMB}` : 'cscd-geometry';
+    const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name });
     worker.onmessage = (event: MessageEvent<WorkerMessage>) => this.receive(event.data);
     worker.onerror = (event: ErrorEvent) => {
       event.preventDefault();
@@ -173,6 +229,7 @@ export class GeometryClient {
     if (message.type === 'error') {
       pending.reject(new WorkerError(message.kind, message.message));
       if (message.kind === 'crash') this.crash(message.message);
+      if (message.kind === 'memory') this.replace(message.message, 'memory');
     } else {
       this.crashes = 0;
       pending.resolve(message as never);
@@ -191,10 +248,10 @@ export class GeometryClient {
   }
 
   /** Terminates the worker, fails what it had pending, starts a new one and re-opens the mesh in it. */
-  private replace(message: string, why: 'crash' | 'cancel'): void {
+  private replace(message: string, why: 'crash' | 'cancel' | 'memory'): void {
     if (this.dead) return;
     this.worker.terminate();
-    this.rejectAll(message, why === 'crash' ? 'crash' : 'cancelled');
+    this.rejectAll(message, why === 'cancel' ? 'cancelled' : why);
     if (why === 'crash') this.crashes++;
     if (this.crashes > MAX_CONSECUTIVE_CRASHES) {
       this.dead = true;
@@ -204,10 +261,14 @@ export class GeometryClient {
     }
     this.worker = this.spawn();
     let restored: Promise<OpenedReply | null> = Promise.resolve(null);
-    if (this.current) {
-      const { fileName, bytes } = this.current;
-      const copy = bytes.slice(0);
-      restored = this.request({ type: 'open', fileName, bytes: copy, withArrays: false }, [copy]);
+    const kept = this.current;
+    if (kept && 'bytes' in kept) {
+      const copy = kept.bytes.slice(0);
+      restored = this.request({ type: 'open', fileName: kept.fileName, bytes: copy, withArrays: false }, [copy]);
+    } else if (kept) {
+      const positions = kept.positions.slice(), triangles = kept.triangles.slice();
+      const body = { type: 'restore', fileName: kept.fileName, positions, triangles, decimatedFrom: kept.decimatedFrom } as const;
+      restored = this.request(body, [positions.buffer, triangles.buffer]);
     }
     if (why === 'crash') this.hooks.onCrash?.(message, restored);
     else this.hooks.onRestart?.(restored);

@@ -81,9 +81,32 @@ export interface WriteRequest {
 }
 
 /**
- * Asks the worker to stop the `skeleton` request with this `id` between two steps. It has no reply of
- * its own: the request it names answers with an `error` of kind `cancelled` (or with its result, when
- * it had already finished). Unlike every other request it is handled at once, not queued.
+ * The open mesh decimated to about `targetFaces` faces (lib/mesh/decimate.ts); it replaces the open
+ * mesh in the worker (the geodesic solver is opened on it when needed). Runs in steps, with `progress`.
+ */
+export interface DecimateRequest {
+  type: 'decimate';
+  id: number;
+  targetFaces: number;
+}
+
+/** Opens a mesh this worker's predecessor had decimated (after a restart): its arrays, no parsing or repair. */
+export interface RestoreRequest {
+  type: 'restore';
+  id: number;
+  fileName: string;
+  /** Transferred. */
+  positions: Float64Array;
+  triangles: Uint32Array;
+  /** Faces of the mesh it was decimated from. */
+  decimatedFrom: number;
+}
+
+/**
+ * Asks the worker to stop the request with this `id` (any but `open`, `restore` and `write`) at its next
+ * step: before or after opening the geodesic solver, between pipeline or decimation steps. It has no
+ * reply of its own: the request it names answers with an `error` of kind `cancelled` (or with its
+ * result, when it had already finished). Unlike every other request it is handled at once, not queued.
  */
 export interface CancelRequest {
   type: 'cancel';
@@ -97,6 +120,8 @@ export type WorkerRequest =
   | SkeletonRequest
   | EvaluateRequest
   | WriteRequest
+  | DecimateRequest
+  | RestoreRequest
   | CancelRequest
   | CrashRequest;
 
@@ -106,7 +131,6 @@ export type WorkerRequest =
 export interface OpenTimings {
   parseMs: number;
   inspectMs: number;
-  prepareMs: number;
 }
 
 export interface OpenedReply {
@@ -121,9 +145,28 @@ export interface OpenedReply {
   warnings: string[];
   /** What the repair on load did (lib/io/repair.ts), one sentence each; the arrays and facts are after it. */
   repairs: string[];
-  /** Why geodesic computations are unavailable on this mesh (e.g. non-manifold), or null. */
+  /**
+   * Why geodesic computations are unavailable on this mesh (e.g. non-manifold), or null. Known at once
+   * for a mesh whose facts show it; otherwise the geodesic solver is only opened by the first request
+   * that needs it, which then fails with the reason.
+   */
   surfaceError: string | null;
+  /** Faces of the mesh it was decimated from (a `restore`), else null. */
+  decimatedFrom: number | null;
   timings: OpenTimings;
+}
+
+export interface DecimatedReply {
+  type: 'decimated';
+  id: number;
+  /** xyz per vertex, float32 for the GPU. */
+  positions: Float32Array;
+  /** The same positions in full precision: what the worker computes on, kept by the page to restore it after a restart. */
+  exactPositions: Float64Array;
+  triangles: Uint32Array;
+  facts: MeshFacts;
+  decimatedFrom: number;
+  timings: { decimateMs: number };
 }
 
 export interface DistanceReply {
@@ -203,11 +246,12 @@ export interface WrittenReply {
 
 /**
  * `format`: the file is not a readable mesh; `core`: the core refused the input or computation;
- * both leave the worker usable. `crash`: the WASM core aborted or the worker hit an unexpected
- * error; its state is lost and the page must replace it. `cancelled`: the request was cancelled
- * (the worker is fine).
+ * both leave the worker usable. `memory`: the core ran out of memory; the worker is usable but keeps
+ * the memory (WebAssembly memory never shrinks), so the page replaces it. `crash`: the WASM core aborted
+ * or the worker hit an unexpected error; its state is lost and the page must replace it. `cancelled`:
+ * the request was cancelled (the worker is fine).
  */
-export type ErrorKind = 'format' | 'core' | 'crash' | 'cancelled';
+export type ErrorKind = 'format' | 'core' | 'memory' | 'crash' | 'cancelled';
 
 export interface ErrorReply {
   type: 'error';
@@ -216,7 +260,7 @@ export interface ErrorReply {
   message: string;
 }
 
-export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'distance' | 'separator' | 'sources' | 'stage2' | 'evaluate';
+export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'decimate' | 'distance' | 'separator' | 'sources' | 'stage2' | 'evaluate';
 
 /** News of a pipeline run after one step (PipelineProgress with float32 loops, transferred). */
 export interface PipelineNews {
@@ -236,9 +280,19 @@ export interface ProgressEvent {
   fraction?: number;
   /** Set on the `sources` events of a skeleton request. */
   pipeline?: PipelineNews;
+  /** Set when the geodesic solver has just been opened: how long that took. */
+  solverMs?: number;
 }
 
-export type WorkerReply = OpenedReply | DistanceReply | SeparatorReply | SkeletonReply | EvaluationReply | WrittenReply | ErrorReply;
+export type WorkerReply =
+  | OpenedReply
+  | DistanceReply
+  | SeparatorReply
+  | SkeletonReply
+  | EvaluationReply
+  | WrittenReply
+  | DecimatedReply
+  | ErrorReply;
 export type WorkerMessage = WorkerReply | ProgressEvent;
 
 /** The reply type that answers each request type. */
@@ -249,6 +303,8 @@ export interface ReplyFor {
   skeleton: SkeletonReply;
   evaluate: EvaluationReply;
   write: WrittenReply;
+  decimate: DecimatedReply;
+  restore: OpenedReply;
   cancel: never;
   crash: never;
 }

@@ -1,23 +1,27 @@
 /// <reference lib="webworker" />
 /**
  * The geometry worker: parses mesh files and runs the WASM core, one request at a time, so the
- * page never blocks. Holds at most one open mesh (its prefactored Surface).
+ * page never blocks. Holds at most one open mesh; its geodesic solver (the prefactored Surface, the
+ * costly part on a large mesh) is opened by the first request that needs it.
  */
 import { createCore } from '../../../lib/core/index.ts';
 import { defaultOptions } from '../../../lib/core/options.ts';
-import type { Core, MeshArrays, Options, Pipeline, Separator, Skeleton, Surface } from '../../../lib/core/types.ts';
+import type { Core, MeshArrays, MeshFacts, Options, Pipeline, Separator, Skeleton, Surface } from '../../../lib/core/types.ts';
 import { parseMesh } from '../../../lib/io/index.ts';
 import { repairMesh } from '../../../lib/io/repair.ts';
 import { writeLoopsObj } from '../../../lib/io/loops.ts';
 import { SKELETON_WRITERS } from '../../../lib/io/skeleton.ts';
+import { Decimator } from '../../../lib/mesh/decimate.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
 import {
   transferables,
+  type DecimateRequest,
   type DistanceRequest,
   type ErrorKind,
   type EvaluateRequest,
   type OpenRequest,
   type ProgressStage,
+  type RestoreRequest,
   type SeparatorData,
   type SeparatorRequest,
   type SkeletonData,
@@ -29,19 +33,24 @@ import {
 
 declare const self: DedicatedWorkerGlobalScope;
 
+/** The page may cap the core's memory (test hook, see client.ts): it comes in the worker's name. */
+const memoryLimitMB = Number(/memoryLimitMB=(\d+)/.exec(self.name)?.[1]) || undefined;
+
 /** Started at once so the download and compilation overlap with the page's first file read. */
 const corePromise: Promise<Core> = fetch(wasmUrl)
   .then((response) => {
     if (!response.ok) throw new Error(`HTTP ${response.status} for ${wasmUrl}`);
     return response.arrayBuffer();
   })
-  .then((bytes) => createCore(bytes));
+  .then((bytes) => createCore(bytes, { memoryLimitMB }));
 corePromise.catch(() => {}); // reported when a request needs the core
 
 interface OpenMesh {
   mesh: MeshArrays;
-  vertexCount: number;
+  facts: MeshFacts;
+  /** The geodesic solver, opened by the first request that needs it. */
   surface: Surface | null;
+  /** Why the solver cannot be opened on this mesh, once known. */
   surfaceError: string | null;
   /** The source of the last separator request, for re-runs with other options. */
   lastSource: number | null;
@@ -73,7 +82,7 @@ function classify(error: unknown): { kind: ErrorKind; message: string } {
   const name = error instanceof Error ? error.name : '';
   const message = error instanceof Error ? error.message : String(error);
   if (name === 'MeshFormatError') return { kind: 'format', message };
-  if (name === 'CoreError') return { kind: 'core', message };
+  if (name === 'CoreError') return { kind: message.startsWith('out of memory') ? 'memory' : 'core', message };
   // WebAssembly.RuntimeError (abort, trap, out of memory) or a bug: the core's state is suspect.
   const what = error instanceof WebAssembly.RuntimeError ? 'The geometry core crashed' : 'The geometry worker failed';
   return { kind: 'crash', message: `${what}: ${message || name || 'unknown error'}` };
@@ -92,36 +101,13 @@ async function loadCore(id: number): Promise<Core> {
 async function open(request: OpenRequest): Promise<void> {
   const { id, fileName } = request;
   progress(id, 'parse', `reading ${fileName}…`);
-  let t = performance.now();
+  const t = performance.now();
   const parsed = parseMesh(new Uint8Array(request.bytes), fileName);
   // Repair on load is part of reading the file: the page only ever sees the repaired mesh.
   const { mesh: arrays, repairs } = repairMesh(parsed);
   const mesh = { ...parsed, ...arrays };
   const parseMs = performance.now() - t;
-
-  const core = await loadCore(id);
-  progress(id, 'inspect', 'checking the mesh…');
-  t = performance.now();
-  const facts = core.inspect(mesh);
-  const inspectMs = performance.now() - t;
-
-  // The mesh is accepted from here on: release the previous one before building the new solver.
-  current?.surface?.dispose();
-  current = null;
-
-  progress(id, 'prepare', 'preparing the geodesic solver…');
-  t = performance.now();
-  let surface: Surface | null = null;
-  let surfaceError: string | null = null;
-  try {
-    surface = core.openSurface(mesh);
-  } catch (error) {
-    const { kind, message } = classify(error);
-    if (kind !== 'core') throw error;
-    surfaceError = message;
-  }
-  const prepareMs = performance.now() - t;
-  current = { mesh, vertexCount: facts.vertices, surface, surfaceError, lastSource: null, lastSkeleton: null };
+  const { facts, surfaceError, inspectMs } = await accept(id, mesh);
 
   const positions = request.withArrays ? new Float32Array(mesh.positions) : new Float32Array(0);
   // A copy: the page gets its own (transferred); the worker keeps the mesh for `evaluate`.
@@ -138,22 +124,94 @@ async function open(request: OpenRequest): Promise<void> {
       warnings: mesh.warnings,
       repairs,
       surfaceError,
-      timings: { parseMs, inspectMs, prepareMs },
+      decimatedFrom: null,
+      timings: { parseMs, inspectMs },
     },
     transferables(positions, triangles),
   );
 }
 
-/** The open mesh's surface and a checked source vertex. */
-function surfaceFor(source: number): { mesh: OpenMesh; surface: Surface } {
-  if (!current) throw new UserError('core', 'No mesh is open.');
-  if (!current.surface) {
-    throw new UserError('core', `Geodesic distance is not available on this mesh: ${current.surfaceError}`);
+/** A mesh the page had decimated in a worker before this one: opened as it is. */
+async function restore(request: RestoreRequest): Promise<void> {
+  const { id, fileName, decimatedFrom } = request;
+  const { facts, surfaceError, inspectMs } = await accept(id, { positions: request.positions, triangles: request.triangles });
+  const empty = { positions: new Float32Array(0), triangles: new Uint32Array(0) };
+  post({
+    type: 'opened',
+    id,
+    fileName,
+    format: 'ply',
+    ...empty,
+    facts,
+    warnings: [],
+    repairs: [],
+    surfaceError,
+    decimatedFrom,
+    timings: { parseMs: 0, inspectMs },
+  });
+}
+
+/**
+ * Inspects a mesh and makes it the open one (releasing the previous one), without its solver. On a
+ * mesh whose facts already say it is not an orientable manifold the solver is tried at once: it fails
+ * fast, and the page learns why before anything is asked.
+ */
+async function accept(id: number, mesh: MeshArrays): Promise<{ facts: MeshFacts; surfaceError: string | null; inspectMs: number }> {
+  const core = await loadCore(id);
+  progress(id, 'inspect', 'checking the mesh…');
+  const t = performance.now();
+  const facts = core.inspect(mesh);
+  const inspectMs = performance.now() - t;
+  current?.surface?.dispose();
+  current = { mesh, facts, surface: null, surfaceError: null, lastSource: null, lastSkeleton: null };
+  if (!facts.manifold || !facts.consistentlyOriented) {
+    try {
+      current.surface = core.openSurface(mesh);
+    } catch (error) {
+      const { kind, message } = classify(error);
+      if (kind !== 'core') throw error;
+      current.surfaceError = message;
+    }
   }
-  if (!Number.isInteger(source) || source < 0 || source >= current.vertexCount) {
+  return { facts, surfaceError: current.surfaceError, inspectMs };
+}
+
+/**
+ * The open mesh with its geodesic solver, opened now if it is not yet: a step of the request `id`
+ * of its own (progress "preparing the geodesic solver…", a cancel is honoured before and after it).
+ * `unavailable` starts the message when the mesh cannot have one.
+ */
+async function withSurface(id: number, unavailable: string): Promise<{ mesh: OpenMesh; surface: Surface }> {
+  const mesh = current;
+  if (!mesh) throw new UserError('core', 'No mesh is open.');
+  if (!mesh.surface && !mesh.surfaceError) {
+    const core = await loadCore(id);
+    progress(id, 'prepare', 'preparing the geodesic solver…');
+    await yieldToEvents();
+    checkCancelled(id);
+    const t = performance.now();
+    try {
+      mesh.surface = core.openSurface(mesh.mesh);
+    } catch (error) {
+      const { kind, message } = classify(error);
+      if (kind !== 'core') throw error;
+      mesh.surfaceError = message;
+    }
+    if (mesh.surface) post({ type: 'progress', id, stage: 'prepare', message: 'geodesic solver ready', solverMs: performance.now() - t });
+    await yieldToEvents();
+    checkCancelled(id);
+  }
+  if (!mesh.surface) throw new UserError('core', `${unavailable}: ${mesh.surfaceError}`);
+  return { mesh, surface: mesh.surface };
+}
+
+/** The open mesh's surface and a checked source vertex. */
+async function surfaceFor(id: number, source: number): Promise<{ mesh: OpenMesh; surface: Surface }> {
+  const opened = await withSurface(id, 'Geodesic distance is not available on this mesh');
+  if (!Number.isInteger(source) || source < 0 || source >= opened.mesh.facts.vertices) {
     throw new UserError('core', `Source vertex ${source} is not a vertex of this mesh.`);
   }
-  return { mesh: current, surface: current.surface };
+  return opened;
 }
 
 function finiteMax(values: ArrayLike<number>): number {
@@ -165,9 +223,9 @@ function finiteMax(values: ArrayLike<number>): number {
   return max;
 }
 
-function distance(request: DistanceRequest): void {
+async function distance(request: DistanceRequest): Promise<void> {
   const { id, source } = request;
-  const { surface } = surfaceFor(source);
+  const { surface } = await surfaceFor(id, source);
   progress(id, 'distance', 'computing distance…');
   const t = performance.now();
   const d64 = surface.distanceFromVertex(source);
@@ -200,11 +258,11 @@ function toWire(s: Separator): SeparatorData {
   };
 }
 
-function separator(request: SeparatorRequest): void {
+async function separator(request: SeparatorRequest): Promise<void> {
   const { id } = request;
   const source = request.source ?? current?.lastSource;
   if (source == null) throw new UserError('core', 'No source vertex has been picked yet.');
-  const { mesh, surface } = surfaceFor(source);
+  const { mesh, surface } = await surfaceFor(id, source);
   const options: Options = { ...defaultOptions, ...request.options };
   progress(id, 'separator', 'computing the separator…');
   const t = performance.now();
@@ -225,14 +283,19 @@ function separator(request: SeparatorRequest): void {
 const STEP_TARGET_MS = 150;
 const STEP_MAX_SOURCES = 64;
 
-/** Skeleton requests received and not yet answered, and those of them asked to stop. */
-const skeletonRequests = new Set<number>();
+/** Requests received and not yet answered, and those of them asked to stop. */
+const runningRequests = new Set<number>();
 const cancelRequested = new Set<number>();
 
 class Cancelled extends UserError {
   constructor() {
     super('cancelled', 'The computation was cancelled.');
   }
+}
+
+/** Between two steps of request `id`: stops it when a cancel has come in. */
+function checkCancelled(id: number): void {
+  if (cancelRequested.has(id)) throw new Cancelled();
 }
 
 /** Lets messages (a `cancel`) in between two steps. */
@@ -265,15 +328,12 @@ function skeletonToWire(s: Skeleton): SkeletonData {
 
 async function skeleton(request: SkeletonRequest): Promise<void> {
   const { id } = request;
-  const check = () => {
-    if (cancelRequested.has(id)) throw new Cancelled();
-  };
+  const check = () => checkCancelled(id);
   check();
-  if (!current) throw new UserError('core', 'No mesh is open.');
-  if (!current.surface) throw new UserError('core', `The skeleton is not available on this mesh: ${current.surfaceError}`);
+  const { mesh, surface } = await withSurface(id, 'The skeleton is not available on this mesh');
   const options: Options = { ...defaultOptions, ...request.options };
   progress(id, 'sources', 'stage 1: starting…');
-  let pipeline: Pipeline | null = current.surface.pipeline(options);
+  let pipeline: Pipeline | null = surface.pipeline(options);
   try {
     let k = 1;
     let steps = 0;
@@ -307,7 +367,7 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
     const t = performance.now();
     const result = pipeline.finish();
     const stage2Ms = performance.now() - t;
-    current.lastSkeleton = { skeleton: result, options };
+    mesh.lastSkeleton = { skeleton: result, options };
     const data = skeletonToWire(result);
     const c = data.candidates;
     post(
@@ -327,6 +387,9 @@ async function evaluate(request: EvaluateRequest): Promise<void> {
   if (!current?.lastSkeleton) throw new UserError('core', 'There is no skeleton to evaluate: compute one first.');
   const core = await loadCore(id);
   progress(id, 'evaluate', 'reconstructing the surface from the skeleton…');
+  // One call into the core: a cancel stops it only before it starts (else the page replaces the worker).
+  await yieldToEvents();
+  checkCancelled(id);
   const t = performance.now();
   const result = core.evaluate(current.mesh, current.lastSkeleton.skeleton);
   const evaluateMs = performance.now() - t;
@@ -334,6 +397,38 @@ async function evaluate(request: EvaluateRequest): Promise<void> {
   post(
     { type: 'evaluation', id, evaluation, timings: { evaluateMs } },
     transferables(evaluation.radii, evaluation.vertexError, evaluation.surface.positions, evaluation.surface.triangles),
+  );
+}
+
+// -- decimation ------------------------------------------------------------------------------------
+
+/** Collapses per decimation step: about a tenth of a second, so progress is lively and a cancel quick. */
+const COLLAPSES_PER_STEP = 5000;
+
+async function decimate(request: DecimateRequest): Promise<void> {
+  const { id, targetFaces } = request;
+  if (!current) throw new UserError('core', 'No mesh is open.');
+  const from = current.facts.faces;
+  progress(id, 'decimate', `decimating ${from} faces…`);
+  const t = performance.now();
+  const decimator = new Decimator(current.mesh, targetFaces);
+  for (;;) {
+    await yieldToEvents();
+    checkCancelled(id);
+    if (decimator.step(COLLAPSES_PER_STEP)) break;
+    const p = decimator.progress;
+    post({ type: 'progress', id, stage: 'decimate', message: `decimating: ${p.faces} faces, target ${p.target}…`, fraction: p.fraction });
+  }
+  const mesh = decimator.result();
+  const decimateMs = performance.now() - t;
+  const { facts } = await accept(id, mesh);
+  const positions = new Float32Array(mesh.positions);
+  // Copies for the page: the worker keeps the mesh it computes on.
+  const exactPositions = mesh.positions.slice();
+  const triangles = mesh.triangles.slice();
+  post(
+    { type: 'decimated', id, positions, exactPositions, triangles, facts, decimatedFrom: from, timings: { decimateMs } },
+    transferables(positions, exactPositions, triangles),
   );
 }
 
@@ -364,10 +459,14 @@ async function handle(request: WorkerRequest): Promise<void> {
     switch (request.type) {
       case 'open':
         return await open(request);
+      case 'restore':
+        return await restore(request);
       case 'distance':
-        return distance(request);
+        return await distance(request);
       case 'separator':
-        return separator(request);
+        return await separator(request);
+      case 'decimate':
+        return await decimate(request);
       case 'skeleton':
         return await skeleton(request);
       case 'evaluate':
@@ -395,22 +494,20 @@ async function handle(request: WorkerRequest): Promise<void> {
   } catch (error) {
     post({ type: 'error', id: request.id, ...classify(error) });
   } finally {
-    if (request.type === 'skeleton') {
-      skeletonRequests.delete(request.id);
-      cancelRequested.delete(request.id);
-    }
+    runningRequests.delete(request.id);
+    cancelRequested.delete(request.id);
   }
 }
 
-// One request at a time, in arrival order (open may await the core; a skeleton run yields between
-// its steps). A cancel is not queued: it marks its skeleton request, which stops at its next step.
+// One request at a time, in arrival order (a request yields between its steps, so a cancel gets in).
+// A cancel is not queued: it marks its request, which stops at its next step (or at once, if queued).
 let queue: Promise<void> = Promise.resolve();
 self.onmessage = (event: MessageEvent<WorkerRequest>) => {
   const request = event.data;
   if (request.type === 'cancel') {
-    if (skeletonRequests.has(request.id)) cancelRequested.add(request.id);
+    if (runningRequests.has(request.id)) cancelRequested.add(request.id);
     return;
   }
-  if (request.type === 'skeleton') skeletonRequests.add(request.id);
+  runningRequests.add(request.id);
   queue = queue.then(() => handle(request));
 };

@@ -15,6 +15,7 @@ import type { StudioContext } from './studio-context.ts';
 import { baseName, canvasPng, saveFile } from './ui/downloads.ts';
 import { installFileSources } from './ui/files.ts';
 import { DEFAULT_SAMPLE, installGallery, markSample, sampleByName, type Sample } from './ui/gallery.ts';
+import { LimitOffer } from './ui/limit-offer.ts';
 import { Panel, byTestId, formatMs, swatch } from './ui/panel.ts';
 import { ParamsPanel, STAGE1_OPTIONS } from './ui/params.ts';
 import { separatorCaption, separatorStageTimes } from './ui/separator-panel.ts';
@@ -25,10 +26,12 @@ import { SurfaceLayer } from './viewer/layers.ts';
 import { Viewer } from './viewer/viewer.ts';
 import { WholeShape } from './whole-shape.ts';
 import { GeometryClient, WorkerError } from './worker/client.ts';
-import type { OpenedReply, WriteRequest } from './worker/protocol.ts';
+import type { DecimatedReply, OpenedReply, WriteRequest } from './worker/protocol.ts';
 
 const initial = readUrl();
 const panel = new Panel();
+const offer = new LimitOffer();
+const statusCancel = byTestId<HTMLButtonElement>('status-cancel');
 const viewer = new Viewer(document.querySelector<HTMLElement>('#viewport')!);
 const timeline = new Timeline(document.querySelector<HTMLElement>('#timeline')!);
 const params = new ParamsPanel(document.querySelector<HTMLElement>('#params')!, initial.options);
@@ -45,14 +48,30 @@ const layerColors = new Map<string, string>();
 let opening = 0;
 let computing = 0;
 let failed = false;
-/** The open mesh: its file name, the sample it is (null: a file of the user's) and why it cannot be computed on. */
-let mesh: { fileName: string; sample: string | null; surfaceError: string | null; openMs: number } | null = null;
+/**
+ * The open mesh: its file name, the sample it is (null: a file of the user's), why it cannot be
+ * computed on, its notes (parser warnings, repairs), its faces and the count it was decimated from (or null).
+ */
+let mesh: {
+  fileName: string;
+  sample: string | null;
+  surfaceError: string | null;
+  openMs: number;
+  notes: string[];
+  faces: number;
+  decimatedFrom: number | null;
+} | null = null;
 
 function updateState(): void {
   const state = opening > 0 ? 'loading' : computing > 0 ? 'computing' : failed ? 'error' : 'ready';
   viewer.flush(); // pixels match the state tests wait for
   document.body.dataset.state = state;
-  if (state === 'ready' || state === 'error') panel.setStatus(viewer.surface ? 'Ready' : 'No mesh open');
+  statusCancel.hidden = computing === 0;
+  statusCancel.disabled = false;
+  if (state === 'ready' || state === 'error') {
+    const decimated = mesh?.decimatedFrom ? ` · decimated from ${mesh.decimatedFrom} to ${mesh.faces} faces` : '';
+    panel.setStatus(viewer.surface ? `Ready${decimated}` : 'No mesh open');
+  }
 }
 
 function fail(title: string, error: unknown): void {
@@ -73,17 +92,27 @@ function awaitRestart(restored: Promise<unknown>): void {
     });
 }
 
+/** Test hook: `?memoryLimitMB=N` caps the WASM core's memory (see GeometryClient). */
+const memoryLimitMB = Number(new URLSearchParams(location.search).get('memoryLimitMB')) || null;
+
 const client = new GeometryClient({
-  onProgress: (event) => panel.setStatus(event.message, true),
+  onProgress: (event) => {
+    panel.setStatus(event.message, true);
+    if (event.solverMs !== undefined) panel.setTimings({ prepareMs: event.solverMs });
+  },
   onCrash: (message, restored) => {
     failed = true;
     panel.showError('The geometry worker stopped and was restarted', message);
     whole.invalidate(); // the new worker does not have the skeleton any more
     awaitRestart(restored);
   },
-  // The worker was replaced to stop a cancelled run: the mesh is re-opened, no error to show.
-  onRestart: awaitRestart,
-});
+  // The worker was replaced to stop a cancelled run or to free its memory: the mesh is re-opened, no
+  // error to show here. A skeleton it held is gone (a run being cancelled reports that itself).
+  onRestart: (restored) => {
+    if (!whole.running) whole.invalidate();
+    awaitRestart(restored);
+  },
+}, memoryLimitMB);
 const ctx: StudioContext = {
   viewer,
   client,
@@ -136,28 +165,78 @@ async function openBytes(fileName: string, bytes: ArrayBuffer, sample: string | 
 
 function showMesh(reply: OpenedReply, sample: string | null): void {
   const t = reply.timings;
-  mesh = { fileName: reply.fileName, sample, surfaceError: reply.surfaceError, openMs: t.parseMs + t.inspectMs + t.prepareMs };
+  const notes = [...reply.warnings, ...reply.repairs.map((repair) => `Repaired: ${repair}`)];
+  const { degenerateFaces, unreferencedVertices, faces } = reply.facts;
+  if (degenerateFaces) notes.push(`${degenerateFaces} degenerate face${degenerateFaces > 1 ? 's' : ''} (repeated vertex or zero area)`);
+  if (unreferencedVertices) notes.push(`${unreferencedVertices} ${unreferencedVertices > 1 ? 'vertices' : 'vertex'} used by no face`);
+  if (reply.surfaceError) notes.push(`Geodesic distance is unavailable: ${reply.surfaceError}`);
+  mesh = { fileName: reply.fileName, sample, surfaceError: reply.surfaceError, openMs: t.parseMs + t.inspectMs, notes, faces, decimatedFrom: null };
+  showSurface(reply.positions, reply.triangles);
+  viewer.frame();
+  markSample(gallery, sample);
+  panel.setFile(reply.fileName, reply.format);
+  panel.setFacts(reply.facts);
+  panel.setNotes(notes);
+  // The solver is opened by the first computation, which fills in its time.
+  panel.setTimings({ ...reply.timings, prepareMs: null });
+  offer.show(faces, reply.facts.vertices);
+  delete document.body.dataset.decimatedFrom;
+}
+
+/** The decimated mesh replaces the one shown (same view); every stage now computes on it. */
+function showDecimated(reply: DecimatedReply): void {
+  if (!mesh) return;
+  const { faces } = reply.facts;
+  const note = `Decimated from ${reply.decimatedFrom} to ${faces} faces (quadric edge collapse; genus, components and holes kept)`;
+  mesh = { ...mesh, faces, decimatedFrom: reply.decimatedFrom, notes: [...mesh.notes, note] };
+  showSurface(reply.positions, reply.triangles);
+  panel.setFacts(reply.facts);
+  panel.setNotes(mesh.notes);
+  panel.setTimings({ prepareMs: null });
+  document.body.dataset.decimatedFrom = String(reply.decimatedFrom);
+}
+
+/** A new surface in the view: every stage's result and layer is dropped. */
+function showSurface(positions: Float32Array, triangles: Uint32Array): void {
   wanted = 'mesh';
   userHidden.clear();
   viewer.clearLayers();
   single.reset();
   whole.reset();
-  viewer.setLayer('surface', new SurfaceLayer(reply.positions, reply.triangles));
+  viewer.setLayer('surface', new SurfaceLayer(positions, triangles));
   viewer.surface!.setFlatShading(flatBox.checked);
   viewer.surface!.setIsolines(isolinesBox.checked);
-  viewer.frame();
-  markSample(gallery, sample);
-
-  panel.setFile(reply.fileName, reply.format);
-  panel.setFacts(reply.facts);
-  const notes = [...reply.warnings, ...reply.repairs.map((repair) => `Repaired: ${repair}`)];
-  const { degenerateFaces, unreferencedVertices } = reply.facts;
-  if (degenerateFaces) notes.push(`${degenerateFaces} degenerate face${degenerateFaces > 1 ? 's' : ''} (repeated vertex or zero area)`);
-  if (unreferencedVertices) notes.push(`${unreferencedVertices} ${unreferencedVertices > 1 ? 'vertices' : 'vertex'} used by no face`);
-  if (reply.surfaceError) notes.push(`Geodesic distance is unavailable: ${reply.surfaceError}`);
-  panel.setNotes(notes);
-  panel.setTimings(reply.timings);
 }
+
+// -- meshes above the size limit: decimate, or compute on the full mesh -------------------------------
+
+offer.onDecimate = (targetFaces) => void decimateMesh(targetFaces);
+offer.onFull = () => {
+  offer.hide();
+  refresh();
+};
+
+async function decimateMesh(targetFaces: number): Promise<void> {
+  offer.setBusy(true);
+  ctx.begin(`decimating to ${targetFaces} faces…`);
+  try {
+    showDecimated(await client.decimate(targetFaces).result);
+    offer.hide();
+  } catch (error) {
+    // A crash is reported by onCrash; a cancel leaves the offer as it was.
+    if (!(error instanceof WorkerError && (error.kind === 'crash' || error.kind === 'cancelled'))) fail('Could not decimate the mesh', error);
+  } finally {
+    offer.setBusy(false);
+    ctx.end();
+    refresh();
+  }
+}
+
+statusCancel.addEventListener('click', () => {
+  statusCancel.disabled = true;
+  panel.setStatus('cancelling…', true);
+  client.cancelRunning();
+});
 
 async function openFile(file: File): Promise<void> {
   let bytes: ArrayBuffer;
@@ -185,7 +264,7 @@ async function openSample(sample: Sample): Promise<boolean> {
 
 // -- stages ----------------------------------------------------------------------------------------
 
-const canCompute = () => !!viewer.surface && !mesh?.surfaceError;
+const canCompute = () => !!viewer.surface && !mesh?.surfaceError && !offer.pending;
 
 /** The stage shown: the one wanted, or the last one the stage-1 run reached when it stopped earlier. */
 function shownStage(): StageKey {
@@ -337,12 +416,13 @@ viewer.onClick = (x, y) => {
     return;
   }
   const pick = viewer.pick(x, y);
-  if (!pick) return;
+  if (!pick || !canCompute()) return;
   if (key === 'mesh') wanted = 'geodesics';
   void single.run(pick.vertex);
 };
 
 byTestId('random-source').addEventListener('click', () => {
+  if (!canCompute()) return;
   if (stageDef(shownStage()).group !== 'source') wanted = 'geodesics';
   void single.runRandom();
 });

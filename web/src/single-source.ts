@@ -76,7 +76,10 @@ export class SingleSource {
     } catch (error) {
       if (!current()) return;
       this.clear();
-      if (!(error instanceof WorkerError && error.kind === 'crash')) this.ctx.fail('Could not compute stage 1 (geodesic distance)', error);
+      // A crash is reported by the page's crash handler; a cancel is the user's own doing.
+      if (!(error instanceof WorkerError && (error.kind === 'crash' || error.kind === 'cancelled'))) {
+        this.ctx.fail('Could not compute stage 1 (geodesic distance)', error);
+      }
     } finally {
       this.inFlight--;
       this.ctx.end();

@@ -124,7 +124,8 @@ export class Panel {
     byTestId('warnings-section').hidden = notes.length === 0;
   }
 
-  setTimings(t: { parseMs?: number; inspectMs?: number; prepareMs?: number }): void {
+  /** Timings of opening the mesh; null shows '–' (not measured yet), undefined leaves a row as it is. */
+  setTimings(t: { parseMs?: number; inspectMs?: number; prepareMs?: number | null }): void {
     const set = (id: string, ms: number | null | undefined) => {
       if (ms !== undefined) byTestId(id).textContent = ms === null ? '–' : formatMs(ms);
     };

@@ -152,11 +152,6 @@ export class GeometryClient {
     for (const [id, pending] of this.pending) if (pending.cancellable) this.cancel(id);
   }
 
-  /** Whether a computing request is waiting for its answer. */
-  get computing(): boolean {
-    return [...this.pending.values()].some((p) => p.cancellable);
-  }
-
   /** The reconstruction error of the last skeleton the worker computed on the open mesh. */
   evaluate(): Promise<ReplyFor['evaluate']> {
     return this.request({ type: 'evaluate' });

@@ -1,5 +1,5 @@
 // Quadric edge-collapse decimation (lib/mesh/decimate.ts) on shared meshes: a closed genus-4 surface,
-// an open torus with two holes and a mesh of several components keep their topology, reach the target
+// an open torus with holes and a mesh of several components keep their topology, reach the target
 // and stay close to the original surface; the same input gives the same output.
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core, type MeshArrays } from '../../lib/core/node.ts';
@@ -32,7 +32,7 @@ function meanDistance(original: MeshArrays, decimated: MeshArrays, stride: numbe
 
 const CASES = [
   { file: 'fertility_9k.ply', what: 'closed, genus 4' },
-  { file: 'torus_two_holes_open.ply', what: 'open, genus 1, two boundary loops' },
+  { file: 'torus_two_holes_open.ply', what: 'open, genus 1, three boundary loops' },
   { file: 'rings.ply', what: 'several components' },
 ];
 
@@ -56,7 +56,7 @@ describe('decimate', () => {
       expect(after.boundaryLoops).toBe(before.boundaryLoops);
       expect(after.faces).toBeLessThanOrEqual(target);
       expect(after.faces).toBeGreaterThanOrEqual(target - 2);
-      expect(meanDistance(mesh, result, 7)).toBeLessThan(2e-3 * before.bboxDiagonal);
+      expect(meanDistance(mesh, result, 7)).toBeLessThan(1e-3 * before.bboxDiagonal);
 
       expect(progress.length).toBeGreaterThan(2);
       expect(progress.at(-1)).toEqual({ faces: after.faces, target, fraction: 1 });

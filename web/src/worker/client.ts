@@ -69,7 +69,7 @@ interface Pending {
 /** What the worker needs to open the page's mesh again: the file, or the arrays of the decimated mesh. */
 type KeptMesh =
   | { fileName: string; bytes: ArrayBuffer }
-  | { fileName: string; positions: Float64Array; triangles: Uint32Array; decimatedFrom: number };
+  | { fileName: string; positions: Float64Array; triangles: Uint32Array };
 
 const UNCANCELLABLE = new Set<WorkerRequest['type']>(['open', 'restore', 'write']);
 
@@ -121,7 +121,7 @@ export class GeometryClient {
     const fileName = this.current?.fileName ?? 'mesh';
     const job = this.job({ type: 'decimate', targetFaces });
     const result = job.result.then((reply) => {
-      this.current = { fileName, positions: reply.exactPositions, triangles: reply.triangles.slice(), decimatedFrom: reply.decimatedFrom };
+      this.current = { fileName, positions: reply.exactPositions, triangles: reply.triangles.slice() };
       return reply;
     });
     return { result, cancel: job.cancel };
@@ -262,8 +262,7 @@ export class GeometryClient {
       restored = this.request({ type: 'open', fileName: kept.fileName, bytes: copy, withArrays: false }, [copy]);
     } else if (kept) {
       const positions = kept.positions.slice(), triangles = kept.triangles.slice();
-      const body = { type: 'restore', fileName: kept.fileName, positions, triangles, decimatedFrom: kept.decimatedFrom } as const;
-      restored = this.request(body, [positions.buffer, triangles.buffer]);
+      restored = this.request({ type: 'restore', fileName: kept.fileName, positions, triangles }, [positions.buffer, triangles.buffer]);
     }
     if (why === 'crash') this.hooks.onCrash?.(message, restored);
     else this.hooks.onRestart?.(restored);

@@ -98,8 +98,6 @@ export interface RestoreRequest {
   /** Transferred. */
   positions: Float64Array;
   triangles: Uint32Array;
-  /** Faces of the mesh it was decimated from. */
-  decimatedFrom: number;
 }
 
 /**
@@ -151,8 +149,6 @@ export interface OpenedReply {
    * that needs it, which then fails with the reason.
    */
   surfaceError: string | null;
-  /** Faces of the mesh it was decimated from (a `restore`), else null. */
-  decimatedFrom: number | null;
   timings: OpenTimings;
 }
 
@@ -267,8 +263,10 @@ export interface PipelineNews {
   done: number;
   total: number;
   finished: boolean;
-  /** The loops found by this step's sources (empty for failed sources), xyz triples, closed. */
+  /** The loops found by this step's sources (empty for failed sources), xyz triples. */
   newLoops: Float32Array[];
+  /** Per new loop: 1 closed, 0 an open path ending on the mesh boundary. */
+  newClosed: Uint8Array;
 }
 
 /** Intermediate news about a request; `fraction` in [0, 1] when the stage can measure itself. */

@@ -79,6 +79,11 @@ test('a 1M-face mesh shows in seconds, the page offers to decimate it, and the s
   await expect(page.getByTestId('warnings')).toContainText(`Decimated from ${big.faces} to ${faces} faces`);
   await expect(page.getByTestId('status')).toContainText(`decimated from ${big.faces} to ${faces} faces`);
 
+  // A new worker (here after a simulated crash) gets the decimated mesh back, not the file: the skeleton
+  // below is computed on it in seconds (on the full mesh the solver alone takes over a minute).
+  await page.evaluate(() => window.cscd!.simulateCrash('abort'));
+  await waitForState(page, 'error');
+  await expect(page.getByTestId('facts-faces')).toHaveText(String(faces));
   await runWhole(page, 8);
   await expect(page.getByTestId('sk-cycles')).toHaveText('1');
   await expect(page.getByTestId('timing-prepare')).toHaveText(/\d+(\.\d)? (ms|s)/);

@@ -247,7 +247,8 @@ export class GeometryClient {
     if (this.dead) return;
     this.worker.terminate();
     this.rejectAll(message, why === 'cancel' ? 'cancelled' : why);
-    if (why === 'crash') this.crashes++;
+    // Out of memory counts too: a mesh that exhausts even a fresh worker must not restart it forever.
+    if (why !== 'cancel') this.crashes++;
     if (this.crashes > MAX_CONSECUTIVE_CRASHES) {
       this.dead = true;
       const final = `${message} The geometry worker keeps failing; reload the page.`;

@@ -62,7 +62,14 @@ export interface Options {
 }
 
 /** Why stage 1 produced no separator for a source ('ok' when it did). */
-export type SeparatorStatus = 'ok' | 'no-cut-locus' | 'no-target' | 'trace-failed' | 'degenerate-loop' | 'shorten-failed';
+export type SeparatorStatus =
+  | 'ok'
+  | 'no-cut-locus'
+  | 'no-target'
+  | 'trace-failed'
+  | 'degenerate-loop'
+  | 'shorten-failed'
+  | 'not-separating';
 
 /** Points as xyz triples, one after the other. */
 export type Polyline = Float64Array;
@@ -87,16 +94,26 @@ export interface Separator {
     root: number;
     cycleRank: number;
   };
-  /** Target cut-locus vertex and its position, or null when none was found. */
+  /** Boundary vertices where the distance is lowest along the boundary (its gradient normal to it). */
+  boundaryExtremities: { vertices: Uint32Array; points: Float64Array };
+  /** Target cut-locus vertex and its position, or null (none found, or the separator is a path). */
   target: number | null;
   /** Targets tried: the nearest first, farther ones when a loop enclosed nothing. */
   attempts: number;
   targetPoint: [number, number, number] | null;
-  /** The two steepest-descent paths from the target, as polylines on the surface. */
+  /**
+   * The two boundary extremities an open separator runs between (on one boundary loop, distance
+   * gradients opposed: paper Sec. 3.2), vertex indices and positions; null for a loop.
+   */
+  ends: Uint32Array | null;
+  endPoints: Float64Array | null;
+  /** False when the separator is an open path between `ends` rather than a closed loop. */
+  closed: boolean;
+  /** The two steepest-descent paths from the target (or the two ends), as polylines on the surface. */
   paths: [Polyline, Polyline];
-  /** Their concatenation: a closed loop (last point joins the first). */
+  /** Their concatenation: a closed loop (last point joins the first), or the open path. */
   approxLoop: Polyline;
-  /** The loop after edge-flip shortening: closed, on the surface. */
+  /** The loop (or path) after edge-flip shortening, on the surface. */
   loop: Polyline;
   /** The locality constraint (null when switched off). */
   sphere: { center: [number, number, number]; radius: number } | null;
@@ -106,7 +123,7 @@ export interface Separator {
   areas: [number, number];
   /** A1 / (A2 * length) (paper Sec. 4.2.1). */
   score: number;
-  /** Whether the loop's centroid lies inside the shape (winding number > 1/2). */
+  /** Whether the loop's centroid lies inside the shape (winding number > 1/2); true for paths. */
   centroidInside: boolean;
   /** Milliseconds per stage. */
   timings: Record<string, number>;
@@ -128,6 +145,8 @@ export interface Skeleton {
   candidates: {
     sources: Uint32Array;
     loops: Polyline[];
+    /** 1 for a closed loop, 0 for a path ending on the boundary. */
+    closed: Uint8Array;
     scores: Float64Array;
     fates: CandidateFate[];
   };
@@ -156,6 +175,8 @@ export interface PipelineProgress {
   finished: boolean;
   /** The loops found by this step's sources (empty polylines for failed sources), for progressive display. */
   newLoops: Polyline[];
+  /** Per new loop: 1 closed, 0 a path ending on the boundary. */
+  newClosed: Uint8Array;
 }
 
 /**

@@ -44,6 +44,8 @@ export interface SkeletonJson {
   vertexToNode: number[];
   /** The packed separators' loops, in the order of `packed` (separator i owns node i's region). */
   separators: Point[][];
+  /** Per separator: false for an open path whose ends lie on the mesh boundary. */
+  separatorsClosed: boolean[];
   stats: Skeleton['stats'];
   options: Options;
 }
@@ -124,6 +126,7 @@ export function skeletonJson(skeleton: Skeleton, meta: SkeletonMeta): SkeletonJs
     edges: toPairs(skeleton.edges),
     vertexToNode: Array.from(skeleton.vertexToNode),
     separators: loops.map((loop) => toPoints(loop)),
+    separatorsClosed: Array.from(skeleton.packed, (i) => skeleton.candidates.closed[i] === 1),
     stats: {
       n: stats.n,
       candidates: stats.candidates,

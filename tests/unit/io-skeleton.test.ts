@@ -26,6 +26,7 @@ function triangleWithTail(): Skeleton {
     candidates: {
       sources: Uint32Array.from([5, 1, 4]),
       loops: [Float64Array.from([0, 0, 1, 0, 1, 1, 1, 0, 1]), new Float64Array(0), Float64Array.from([2, 2, 2, 3, 3, 3, 4, 4, 4])],
+      closed: Uint8Array.from([1, 1, 0]),
       scores: Float64Array.from([0.75, 0, 0.5]),
       fates: ['packed', 'failed', 'packed'],
     },
@@ -50,6 +51,7 @@ describe('skeleton writers', () => {
       '"edges":[[0,1],[1,2],[2,0],[3,2]]',
       '"vertexToNode":[0,0,1,2,3,3]',
       '"separators":[[[2,2,2],[3,3,3],[4,4,4]],[[0,0,1],[0,1,1],[1,0,1]]]',
+      '"separatorsClosed":[false,true]',
       '"stats":{"n":3,"candidates":3,"pruned":1,"packed":2,"cycles":1,"seed":7,"timings":{"stage1":12.5,"stage2":0.25}}',
       `"options":${OPTIONS_JSON}}`,
     ].join(',')}\n`);

@@ -136,6 +136,10 @@ describe('skeleton shape and bookkeeping', () => {
     const skeleton = skeletonOf('torus_two_holes_open.ply');
     expect(skeleton.stats.cycles).toBe(1);
     expect(leaves(skeleton)).toEqual([]);
+    // The holes have one boundary loop each: no two points of one hole face each other, and points of
+    // two different holes are never paired (a path between them would cut the tube), so every
+    // separator is a loop around the tube.
+    expect(skeleton.candidates.closed.every((closed) => closed === 1)).toBe(true);
     for (let i = 0; i < skeleton.radii.length; i++) {
       const [x, y, z] = point(skeleton.nodes, i);
       expect(Math.hypot(Math.hypot(x, y) - 1, z), `node ${i} off the core circle`).toBeLessThan(0.05);

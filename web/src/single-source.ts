@@ -13,7 +13,7 @@ import { WorkerError } from './worker/client.ts';
 import type { SeparatorReply } from './worker/protocol.ts';
 
 /** Names of the layers a stage-1 run adds (besides the surface's colormap). */
-const SEPARATOR_LAYERS = ['source', 'cut-locus', 'target', 'path-1', 'path-2', 'approx-loop', 'sphere', 'loop'];
+const SEPARATOR_LAYERS = ['source', 'cut-locus', 'boundary-extremities', 'target', 'path-1', 'path-2', 'approx-loop', 'sphere', 'loop'];
 
 export class SingleSource {
   /** The run shown (null: none yet, or it failed). */

@@ -91,9 +91,12 @@ export const STAGES: readonly StageDef[] = [
     group: 'source',
     section: 'Sec. 4.1.2',
     caption:
-      'Where shortest paths from the source collide: the ridges of the distance, kept as a graph on mesh vertices. It reaches around every part of the shape the source cannot see directly; on a closed surface its cycle rank is twice the genus.',
-    layers: [...SOURCE, 'cut-locus'],
-    legend: [{ layer: 'cut-locus', label: 'cut locus', color: COLORS.cutLocus }],
+      'Where shortest paths from the source collide: the ridges of the distance, kept as a graph on mesh vertices. It reaches around every part of the shape the source cannot see directly; on a closed surface its cycle rank is twice the genus. On an open surface the balls mark boundary points where the distance is lowest along the boundary: a separator may end at two of them.',
+    layers: [...SOURCE, 'cut-locus', 'boundary-extremities'],
+    legend: [
+      { layer: 'cut-locus', label: 'cut locus', color: COLORS.cutLocus },
+      { layer: 'boundary-extremities', label: 'boundary extremities', color: COLORS.cutLocus },
+    ],
     click: PICK,
   },
   {
@@ -102,9 +105,9 @@ export const STAGES: readonly StageDef[] = [
     group: 'source',
     section: 'Sec. 4.1.3–4.1.4',
     caption:
-      'The target is the cut-locus point nearest to the source. From it, two steepest-descent paths run down the distance on the two sides of the cut locus until they meet: together they go once around the part the target sits on.',
-    layers: [...SOURCE, 'cut-locus', ...PATHS],
-    dimmed: ['cut-locus'],
+      'The target is the cut-locus point nearest to the source. From it, two steepest-descent paths run down the distance on the two sides of the cut locus until they meet: together they go once around the part the target sits on. On an open surface the target can instead be two boundary points of one boundary loop whose distance gradients point in opposite directions (Sec. 3.2): the paths from them make an open path across the sheet.',
+    layers: [...SOURCE, 'cut-locus', 'boundary-extremities', ...PATHS],
+    dimmed: ['cut-locus', 'boundary-extremities'],
     legend: [
       { layer: 'target', label: 'target', color: COLORS.target },
       { layer: 'path-1', label: 'path 1', color: COLORS.path1 },
@@ -119,8 +122,8 @@ export const STAGES: readonly StageDef[] = [
     section: 'Sec. 4.1.4–4.1.6, 4.2.1',
     caption:
       'The two paths joined give the approximate loop (orange): closed, but it zig-zags along edges. Edge flips shorten it inside the constraint sphere (translucent; the tinted patch is the surface inside it), which keeps the separator local. The result (cyan) cuts the surface in two locally; its score is A1 / (A2 · length), A1 ≤ A2 the areas on its two sides.',
-    layers: [...SOURCE, 'cut-locus', ...PATHS, 'approx-loop', 'sphere', 'loop'],
-    dimmed: ['cut-locus', ...PATHS],
+    layers: [...SOURCE, 'cut-locus', 'boundary-extremities', ...PATHS, 'approx-loop', 'sphere', 'loop'],
+    dimmed: ['cut-locus', 'boundary-extremities', ...PATHS],
     legend: [
       { layer: 'approx-loop', label: 'approximate loop', color: COLORS.approxLoop },
       { layer: 'sphere', label: 'constraint sphere', color: COLORS.sphere },

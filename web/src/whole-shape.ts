@@ -195,7 +195,7 @@ export class WholeShape {
     this.ctx.progressed();
     if (!this.progressLoops) return;
     const before = this.progressLoops.count;
-    for (const loop of news.newLoops) this.progressLoops.add(loop);
+    news.newLoops.forEach((loop, i) => this.progressLoops!.add(loop, news.newClosed[i] === 1));
     if (this.progressLoops.count === before) return;
     // Redrawn at most every PROGRESS_REDRAW_MS, and rarer when frames are slow (a software
     // renderer with the worker busy on the same cores), so the page stays responsive.

@@ -108,6 +108,48 @@ export function capsule(L: number, r: number, around: number): MeshArrays {
   return { positions: Float64Array.from(positions), triangles: Uint32Array.from(triangles) };
 }
 
+/**
+ * A sheet (a surface with boundary, no thickness): the part of the plane where `inside(x, y)` holds,
+ * triangulated by a lattice of near-equilateral triangles with edge `h` over [x0, x1] x [y0, y1] (a
+ * triangle is kept when its centroid is inside), then placed in space by `place` (default: z = 0).
+ */
+export function sheet(
+  [x0, x1]: [number, number],
+  [y0, y1]: [number, number],
+  h: number,
+  inside: (x: number, y: number) => boolean,
+  place: (x: number, y: number) => number[] = (x, y) => [x, y, 0],
+): MeshArrays {
+  const rowStep = (h * Math.sqrt(3)) / 2;
+  const rows = Math.ceil((y1 - y0) / rowStep) + 1;
+  const columns = Math.ceil((x1 - x0) / h) + 1;
+  const at = (i: number, j: number): [number, number] => [x0 + i * h + (j % 2 ? h / 2 : 0), y0 + j * rowStep];
+  const index = new Map<number, number>();
+  const positions: number[] = [];
+  const triangles: number[] = [];
+  const vertex = (i: number, j: number) => {
+    const key = j * (columns + 1) + i;
+    if (!index.has(key)) {
+      index.set(key, positions.length / 3);
+      positions.push(...place(...at(i, j)));
+    }
+    return index.get(key)!;
+  };
+  for (let j = 0; j + 1 < rows; j++)
+    for (let i = 0; i + 1 < columns; i++) {
+      // Counter-clockwise seen from +z; the odd rows are shifted right by half an edge.
+      const pair: [number, number][][] =
+        j % 2 === 0
+          ? [[[i, j], [i + 1, j], [i, j + 1]], [[i + 1, j], [i + 1, j + 1], [i, j + 1]]]
+          : [[[i, j], [i + 1, j + 1], [i, j + 1]], [[i, j], [i + 1, j], [i + 1, j + 1]]];
+      for (const corners of pair) {
+        const centre = corners.map(([a, b]) => at(a, b)).reduce(([sx, sy], [x, y]) => [sx + x / 3, sy + y / 3], [0, 0]);
+        if (inside(centre[0], centre[1])) triangles.push(...corners.map(([a, b]) => vertex(a, b)));
+      }
+    }
+  return meshOf(positions, triangles);
+}
+
 /** The mesh as the text of an OFF file, for CLI tests that need a file. */
 export function offText({ positions, triangles }: MeshArrays): string {
   const lines = ['OFF', `${positions.length / 3} ${triangles.length / 3} 0`];

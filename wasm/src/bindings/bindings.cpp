@@ -129,14 +129,17 @@ val toVal(const SeparatorResult& r, Surface& surface) {
   o.set("message", r.message);
   o.set("distance", toFloat64Array(r.distance));
 
+  auto positionsOf = [&](const auto& vertices) {
+    std::vector<geometrycentral::Vector3> p;
+    for (size_t v : vertices) p.push_back(surface.geometry().vertexPositions[v]);
+    return toFloat64Array(p);
+  };
   const CutLocus& c = r.cutLocus;
   std::vector<uint32_t> vertices(c.vertices.begin(), c.vertices.end()), edges;
-  std::vector<geometrycentral::Vector3> points;
-  for (size_t v : c.vertices) points.push_back(surface.geometry().vertexPositions[v]);
   for (const auto& e : c.edges) edges.insert(edges.end(), {uint32_t(e[0]), uint32_t(e[1])});
   val cutLocus = val::object();
   cutLocus.set("vertices", toTypedArray("Uint32Array", vertices));
-  cutLocus.set("points", toFloat64Array(points));
+  cutLocus.set("points", positionsOf(c.vertices));
   cutLocus.set("edges", toTypedArray("Uint32Array", edges));
   cutLocus.set("angleDeviation", toFloat64Array(c.angleDeviation));
   cutLocus.set("laplacian", toFloat64Array(c.laplacian));
@@ -144,9 +147,18 @@ val toVal(const SeparatorResult& r, Surface& surface) {
   cutLocus.set("cycleRank", c.vertices.empty() ? 0 : c.cycleRank());
   o.set("cutLocus", cutLocus);
 
+  val extremities = val::object();
+  extremities.set("vertices", toTypedArray("Uint32Array", std::vector<uint32_t>(r.boundaryExtremities.begin(),
+                                                                                  r.boundaryExtremities.end())));
+  extremities.set("points", positionsOf(r.boundaryExtremities));
+  o.set("boundaryExtremities", extremities);
+
   o.set("target", r.target ? val(*r.target) : val::null());
   o.set("attempts", r.attempts);
   o.set("targetPoint", r.target ? toArray3(surface.geometry().vertexPositions[*r.target]) : val::null());
+  o.set("ends", r.ends ? toTypedArray("Uint32Array", std::vector<uint32_t>(r.ends->begin(), r.ends->end())) : val::null());
+  o.set("endPoints", r.ends ? positionsOf(*r.ends) : val::null());
+  o.set("closed", r.closed);
   val paths = val::array();
   paths.call<void>("push", toFloat64Array(r.firstPath));
   paths.call<void>("push", toFloat64Array(r.secondPath));
@@ -196,17 +208,20 @@ val toVal(const Skeleton& skeleton, const Options& options) {
 
   std::vector<uint32_t> sources;
   std::vector<double> scores;
+  std::vector<uint8_t> closed;
   val loops = val::array(), fates = val::array();
   for (size_t i = 0; i < skeleton.candidates.size(); i++) {
     const Candidate& c = skeleton.candidates[i];
     sources.push_back(uint32_t(c.source));
     scores.push_back(c.score);
+    closed.push_back(c.closed);
     loops.call<void>("push", toFloat64Array(c.loop));
     fates.call<void>("push", std::string(fateName(skeleton.fates[i])));
   }
   val candidates = val::object();
   candidates.set("sources", toTypedArray("Uint32Array", sources));
   candidates.set("loops", loops);
+  candidates.set("closed", toTypedArray("Uint8Array", closed));
   candidates.set("scores", toFloat64Array(scores));
   candidates.set("fates", fates);
   o.set("candidates", candidates);
@@ -377,13 +392,18 @@ public:
       size_t before = loopsReported;
       Progress progress = pipeline->step(size_t(std::max(1.0, count)));
       val newLoops = val::array();
-      for (size_t i = before; i < progress.done; i++) newLoops.call<void>("push", toFloat64Array(realization->loop(i)));
+      std::vector<uint8_t> newClosed;
+      for (size_t i = before; i < progress.done; i++) {
+        newLoops.call<void>("push", toFloat64Array(realization->loop(i)));
+        newClosed.push_back(realization->closedAt(i));
+      }
       loopsReported = progress.done;
       val o = val::object();
       o.set("done", progress.done);
       o.set("total", progress.total);
       o.set("finished", progress.finished);
       o.set("newLoops", newLoops);
+      o.set("newClosed", toTypedArray("Uint8Array", newClosed));
       return o;
     });
   }

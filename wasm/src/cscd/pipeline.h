@@ -27,7 +27,8 @@ namespace cscd {
 struct Candidate {
   size_t source = 0;
   bool found = false;                           // stage 1 produced a loop
-  std::vector<geometrycentral::Vector3> loop;   // closed polyline on the shape
+  std::vector<geometrycentral::Vector3> loop;   // polyline on the shape
+  bool closed = true;                           // false: a path whose ends lie on the shape's boundary
   double length = 0;
   double score = 0;
   bool centroidInside = false;

@@ -7,10 +7,10 @@ using namespace geometrycentral::surface;
 
 namespace cscd {
 
-Vector3 loopCentroid(const std::vector<Vector3>& loop) {
+Vector3 loopCentroid(const std::vector<Vector3>& loop, bool closed) {
   Vector3 sum{0, 0, 0};
   double total = 0;
-  for (size_t i = 0; i < loop.size(); i++) {
+  for (size_t i = 0; i + (closed ? 0 : 1) < loop.size(); i++) {
     const Vector3 &a = loop[i], &b = loop[(i + 1) % loop.size()];
     double length = norm(b - a);
     sum += length * (a + b) / 2;
@@ -20,10 +20,17 @@ Vector3 loopCentroid(const std::vector<Vector3>& loop) {
 }
 
 Vector3 loopNormal(const std::vector<Vector3>& loop) {
-  Vector3 c = loopCentroid(loop), area{0, 0, 0};
+  Vector3 c = loopCentroid(loop, true), area{0, 0, 0};
   for (size_t i = 0; i < loop.size(); i++) area += cross(loop[i] - c, loop[(i + 1) % loop.size()] - c) / 2;
   double length = norm(area);
   return length > 0 ? area / length : Vector3{0, 0, 0};
+}
+
+Vector3 pathNormal(const std::vector<Vector3>& path, Vector3 surfaceNormal) {
+  if (path.size() < 2) return Vector3{0, 0, 0};
+  Vector3 across = cross(path.back() - path.front(), surfaceNormal);
+  double length = norm(across);
+  return length > 0 ? across / length : Vector3{0, 0, 0};
 }
 
 double windingNumber(VertexPositionGeometry& geometry, Vector3 point) {

@@ -7,11 +7,17 @@
 
 namespace cscd {
 
-// Length-weighted centroid of a closed polyline (its points, the last joined to the first).
-geometrycentral::Vector3 loopCentroid(const std::vector<geometrycentral::Vector3>& loop);
+// Length-weighted centroid of a polyline; a closed one has its last point joined to the first.
+geometrycentral::Vector3 loopCentroid(const std::vector<geometrycentral::Vector3>& loop, bool closed);
 
 // Unit normal of the loop's vector area (the direction it winds around); zero for a degenerate loop.
 geometrycentral::Vector3 loopNormal(const std::vector<geometrycentral::Vector3>& loop);
+
+// The direction an open path across a sheet separates, the analogue of a loop's normal: across the
+// chord between its ends, in the tangent plane of the surface (`surfaceNormal`, e.g. the mean normal
+// of the faces it crosses). Zero when the path is degenerate.
+geometrycentral::Vector3 pathNormal(const std::vector<geometrycentral::Vector3>& path,
+                                    geometrycentral::Vector3 surfaceNormal);
 
 // Generalised winding number of the mesh around a point (1 inside a closed outward-oriented mesh,
 // 0 outside; fractional near holes), by summing the signed solid angles of the triangles.

@@ -48,18 +48,20 @@ struct CellHash {
 
 } // namespace
 
-std::vector<std::vector<size_t>> overlappingLoops(const std::vector<std::vector<Vector3>>& loops, double tolerance) {
+std::vector<std::vector<size_t>> overlappingLoops(const std::vector<std::vector<Vector3>>& loops,
+                                                  const std::vector<char>& closed, double tolerance) {
   // Cells as large as the longest segment (and the tolerance): a segment then spans few cells.
   double cell = tolerance;
-  for (const auto& loop : loops)
-    for (size_t i = 0; i < loop.size(); i++) cell = std::max(cell, norm(loop[(i + 1) % loop.size()] - loop[i]));
+  for (size_t l = 0; l < loops.size(); l++)
+    for (size_t i = 0; i + (closed[l] ? 0 : 1) < loops[l].size(); i++)
+      cell = std::max(cell, norm(loops[l][(i + 1) % loops[l].size()] - loops[l][i]));
   struct Segment {
     size_t loop, index;
   };
   std::unordered_map<std::tuple<long, long, long>, std::vector<Segment>, CellHash> grid;
   auto cellOf = [&](double x) { return long(std::floor(x / cell)); };
   for (size_t l = 0; l < loops.size(); l++)
-    for (size_t i = 0; i < loops[l].size(); i++) {
+    for (size_t i = 0; i + (closed[l] ? 0 : 1) < loops[l].size(); i++) {
       Vector3 a = loops[l][i], b = loops[l][(i + 1) % loops[l].size()];
       for (long x = cellOf(std::min(a.x, b.x) - tolerance); x <= cellOf(std::max(a.x, b.x) + tolerance); x++)
         for (long y = cellOf(std::min(a.y, b.y) - tolerance); y <= cellOf(std::max(a.y, b.y) + tolerance); y++)

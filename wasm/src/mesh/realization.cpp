@@ -23,12 +23,14 @@ Candidate MeshRealization::separator(size_t source) {
   candidate.source = source;
   candidate.found = result.status == "ok";
   candidate.loop = result.loop;
+  candidate.closed = result.closed;
   candidate.length = result.length;
   candidate.score = result.score;
   candidate.centroidInside = result.centroidInside;
   sources.push_back(source);
   loops.push_back(std::move(result.loop));
   loopPoints.push_back(std::move(result.loopPoints));
+  closed.push_back(result.closed);
   return candidate;
 }
 
@@ -38,8 +40,12 @@ double MeshRealization::coverage() const { return sampler.coverage(kCoverageRadi
 
 std::vector<std::vector<size_t>> MeshRealization::overlaps(const std::vector<size_t>& candidates) const {
   std::vector<std::vector<geometrycentral::Vector3>> selected;
-  for (size_t c : candidates) selected.push_back(loops[c]);
-  return overlappingLoops(selected, kOverlapTolerance * surface.facts().meanEdgeLength);
+  std::vector<char> selectedClosed;
+  for (size_t c : candidates) {
+    selected.push_back(loops[c]);
+    selectedClosed.push_back(closed[c]);
+  }
+  return overlappingLoops(selected, selectedClosed, kOverlapTolerance * surface.facts().meanEdgeLength);
 }
 
 Regions MeshRealization::regions(const std::vector<size_t>& packed) {
@@ -48,22 +54,34 @@ Regions MeshRealization::regions(const std::vector<size_t>& packed) {
   return assignRegions(surface, selected);
 }
 
+geometrycentral::Vector3 MeshRealization::separatorNormal(size_t candidate) const {
+  if (closed[candidate]) return loopNormal(loops[candidate]);
+  auto& geometry = surface.geometry();
+  geometry.requireFaceNormals();
+  geometrycentral::Vector3 surfaceNormal{0, 0, 0};
+  for (const auto& p : loopPoints[candidate]) surfaceNormal += geometry.faceNormals[p.inSomeFace().face];
+  return pathNormal(loops[candidate], surfaceNormal);
+}
+
 void MeshRealization::centre(SkeletonGraph& graph, const std::vector<size_t>& packed) const {
   auto inside = [&](const geometrycentral::Vector3& p) { return windingNumber(surface.geometry(), p) > 0.5; };
   for (size_t node = 0; node < packed.size(); node++) {
-    const auto& loop = loops[packed[node]];
-    geometrycentral::Vector3 c = loopCentroid(loop), n = loopNormal(loop);
-    graph.nodes[node] = c + dot(graph.nodes[node] - c, n) * n;
-    if (!inside(graph.nodes[node])) graph.nodes[node] = c;
+    const size_t c = packed[node];
+    geometrycentral::Vector3 centroid = loopCentroid(loops[c], closed[c]), n = separatorNormal(c);
+    graph.nodes[node] = centroid + dot(graph.nodes[node] - centroid, n) * n;
+    if (closed[c] && !inside(graph.nodes[node])) graph.nodes[node] = centroid;
   }
   for (size_t node = packed.size(); node < graph.nodes.size(); node++) {
-    if (graph.weights[node] != 0 || inside(graph.nodes[node])) continue;
+    if (graph.weights[node] != 0) continue;
     size_t heaviest = SIZE_MAX;
+    bool nextToPath = false;
     for (const auto& e : graph.edges) {
       size_t other = e[0] == node ? e[1] : e[1] == node ? e[0] : SIZE_MAX;
-      if (other != SIZE_MAX && (heaviest == SIZE_MAX || graph.weights[other] > graph.weights[heaviest])) heaviest = other;
+      if (other == SIZE_MAX) continue;
+      nextToPath = nextToPath || (other < packed.size() && !closed[packed[other]]);
+      if (heaviest == SIZE_MAX || graph.weights[other] > graph.weights[heaviest]) heaviest = other;
     }
-    if (heaviest != SIZE_MAX) graph.nodes[node] = graph.nodes[heaviest];
+    if (heaviest != SIZE_MAX && !nextToPath && !inside(graph.nodes[node])) graph.nodes[node] = graph.nodes[heaviest];
   }
 
   // Radii fitted to the surface around the final skeleton (the same rule as for other tools'

@@ -26,19 +26,26 @@ public:
   // the centroid of a loop around the tube stays on its axis. A node that still falls outside the
   // shape moves to the loop centroid, which is inside (loops with an outside centroid were pruned); a
   // branch node outside moves to its heaviest neighbour's position. Radii are then fitted to the
-  // surface around the final skeleton (tubeRadii).
+  // surface around the final skeleton (tubeRadii). A path across a sheet (open separator) has no inside:
+  // its node keeps the region centroid along the path's normal and the path centroid across it, and
+  // so do junctions next to such paths.
   void centre(SkeletonGraph& graph, const std::vector<size_t>& packed) const;
 
   // The loop of a candidate as the last stage-1 call produced it (for progressive display).
   const std::vector<geometrycentral::Vector3>& loop(size_t candidate) const { return loops[candidate]; }
+  bool closedAt(size_t candidate) const { return closed[candidate]; }
 
 private:
+  // A loop's normal, or for a path its direction across the sheet (measures.h).
+  geometrycentral::Vector3 separatorNormal(size_t candidate) const;
+
   Surface& surface;
   Options options;
   SourceSampler sampler;
   std::vector<size_t> sources;
   std::vector<std::vector<geometrycentral::Vector3>> loops;
   std::vector<std::vector<geometrycentral::surface::SurfacePoint>> loopPoints;
+  std::vector<char> closed;
 };
 
 using MeshPipeline = Pipeline<MeshRealization>;

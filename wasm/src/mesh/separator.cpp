@@ -1,6 +1,7 @@
 #include "mesh/separator.h"
 
 #include "cscd/stage_clock.h"
+#include "mesh/boundary.h"
 #include "mesh/measures.h"
 #include "mesh/target.h"
 
@@ -25,11 +26,11 @@ std::vector<Vector3> tracePolyline(Surface& surface, const std::vector<size_t>& 
   return points;
 }
 
-double intrinsicLength(Surface& surface, const std::vector<size_t>& loop) {
+double intrinsicLength(Surface& surface, const std::vector<size_t>& loop, bool closed) {
   IntrinsicTriangulation& intrinsic = surface.intrinsic();
   intrinsic.requireEdgeLengths();
   double length = 0;
-  for (size_t i = 0; i < loop.size(); i++)
+  for (size_t i = 0; i + (closed ? 0 : 1) < loop.size(); i++)
     length += intrinsic.edgeLengths[intrinsicHalfedge(*intrinsic.intrinsicMesh, loop[i], loop[(i + 1) % loop.size()]).edge()];
   return length;
 }
@@ -49,27 +50,60 @@ constexpr double kFallbackGrowth = 1.5;
 // ...up to this many targets in all.
 constexpr int kMaxTargets = 6;
 
+// Boundary extremities are minima of the distance along the boundary within this many mean edge
+// lengths on either side.
+constexpr double kExtremityWindow = 3;
+
 namespace {
 
-// Trace, constrain and shorten the loop of one target; returns the failure status, or "" on success.
-// Every per-target field is set afresh, so a result never mixes two attempts.
-const char* loopThroughTarget(Surface& surface, size_t source, size_t target, const Options& options,
-                              SeparatorResult& result, ShortenedLoop& shortened) {
-  result.target = target;
+// Where a separator can pass: a cut-locus target (a loop) or two boundary extremities (a path).
+struct Extremity {
+  double key; // targetKey of the target, or of the farther boundary end
+  size_t target;
+  std::optional<std::array<size_t, 2>> ends;
+};
+
+// Cut-locus targets and boundary pairs together, nearest first (ties: cut-locus targets first).
+std::vector<Extremity> rankExtremities(Surface& surface, size_t source, const Options& options, SeparatorResult& result) {
+  VertexPositionGeometry& geometry = surface.geometry();
+  std::vector<Extremity> ranked;
+  for (size_t t : rankTargets(result.cutLocus, result.distance, geometry, source, options.target, kMinDetour))
+    ranked.push_back({targetKey(geometry, result.distance, source, t, options.target), t, std::nullopt});
+
+  std::vector<BoundaryExtremity> extremities =
+      boundaryExtremities(surface.boundaryLoops(), geometry, result.distance,
+                          kExtremityWindow * surface.facts().meanEdgeLength);
+  for (const BoundaryExtremity& e : extremities) result.boundaryExtremities.push_back(e.vertex);
+  for (const BoundaryPair& pair : opposedExtremities(extremities, geometry, result.distance, source, options.target))
+    ranked.push_back({pair.key, pair.ends[0], pair.ends});
+  std::stable_sort(ranked.begin(), ranked.end(), [](const Extremity& a, const Extremity& b) { return a.key < b.key; });
+  return ranked;
+}
+
+// Trace, constrain and shorten the loop (or path) through one extremity; returns the failure status,
+// or "" on success. Every per-attempt field is set afresh, so a result never mixes two attempts.
+const char* loopThrough(Surface& surface, size_t source, const Extremity& extremity, const Options& options,
+                        SeparatorResult& result, ShortenedLoop& shortened) {
+  result.target = extremity.ends ? std::nullopt : std::optional<size_t>(extremity.target);
+  result.ends = extremity.ends;
+  result.closed = !extremity.ends;
   result.firstPath.clear();
   result.secondPath.clear();
   result.approxLoop.clear();
   result.approxLength = 0;
   result.sphere.reset();
-  result.traced = traceApproximateLoop(*surface.intrinsic().intrinsicMesh, result.distance, result.cutLocus, target, source);
+  ManifoldSurfaceMesh& intrinsicMesh = *surface.intrinsic().intrinsicMesh;
+  result.traced = extremity.ends
+                      ? traceApproximatePath(intrinsicMesh, result.distance, *extremity.ends, source)
+                      : traceApproximateLoop(intrinsicMesh, result.distance, result.cutLocus, extremity.target, source);
   if (!result.traced.failure.empty()) {
     result.message = result.traced.failure;
     return "trace-failed";
   }
   result.firstPath = tracePolyline(surface, result.traced.firstPath, false);
   result.secondPath = tracePolyline(surface, result.traced.secondPath, false);
-  result.approxLoop = tracePolyline(surface, result.traced.loop, true);
-  result.approxLength = intrinsicLength(surface, result.traced.loop);
+  result.approxLoop = tracePolyline(surface, result.traced.loop, result.closed);
+  result.approxLength = intrinsicLength(surface, result.traced.loop, result.closed);
 
   // The sphere reaches exactly the farthest point of the approximate loop (paper Sec. 4.1.6).
   if (options.sphere) {
@@ -78,10 +112,17 @@ const char* loopThroughTarget(Surface& surface, size_t source, size_t target, co
     for (const Vector3& p : result.approxLoop) radius = std::max(radius, norm(p - center));
     result.sphere = Sphere{center, radius};
   }
-  shortened = shortenLoop(surface.intrinsic(), surface.geometry(), result.traced.loop, result.sphere);
+  shortened = shortenLoop(surface.intrinsic(), surface.geometry(), result.traced.loop, result.closed, result.sphere);
   result.message = shortened.failure;
-  if (shortened.failure.empty()) return "";
-  return shortened.failure.rfind("the loop shrank", 0) == 0 ? "degenerate-loop" : "shorten-failed";
+  if (!shortened.failure.empty())
+    return shortened.failure.rfind("the loop shrank", 0) == 0 ? "degenerate-loop" : "shorten-failed";
+  // Both ends on one boundary loop separate the surface, but not always the constraint region: the
+  // boundary may leave the sphere between them. Then the sides (and the score) are not defined.
+  if (!result.closed && !(shortened.areas[0] > 0)) {
+    result.message = "the path between the boundary ends does not separate the region around the source";
+    return "not-separating";
+  }
+  return "";
 }
 
 } // namespace
@@ -101,25 +142,26 @@ SeparatorResult computeSeparator(Surface& surface, size_t source, const Options&
   cutLocusOptions.pruneDepth = options.pruneDepth;
   result.cutLocus = cutLocusSolver.compute(result.distance, source, cutLocusOptions);
   clock.lap("cutLocus");
-  if (result.cutLocus.vertices.empty()) return fail(result, "no-cut-locus", "no cut locus was found for this source");
 
-  std::vector<size_t> targets = rankTargets(result.cutLocus, result.distance, surface.geometry(), source,
-                                            options.target, kMinDetour);
+  std::vector<Extremity> extremities = rankExtremities(surface, source, options, result);
   clock.lap("target");
-  if (targets.empty()) return fail(result, "no-target", "no point of the cut locus is reached around a feature");
+  if (extremities.empty()) {
+    if (result.cutLocus.vertices.empty() && result.boundaryExtremities.empty())
+      return fail(result, "no-cut-locus", "no cut locus was found for this source");
+    return fail(result, "no-target", "no point of the cut locus is reached around a feature, and no two boundary points face each other");
+  }
 
   // The paper's target is the nearest; should its loop enclose nothing (a spurious ridge), farther ones
   // are tried, each clearly farther than the last failure.
   ShortenedLoop shortened;
   const char* status = "";
   double lastFailedKey = 0;
-  for (size_t i = 0; i < targets.size() && result.attempts < kMaxTargets; i++) {
-    double key = targetKey(surface.geometry(), result.distance, source, targets[i], options.target);
-    if (result.attempts > 0 && key < kFallbackGrowth * lastFailedKey) continue;
+  for (size_t i = 0; i < extremities.size() && result.attempts < kMaxTargets; i++) {
+    if (result.attempts > 0 && extremities[i].key < kFallbackGrowth * lastFailedKey) continue;
     result.attempts++;
-    status = loopThroughTarget(surface, source, targets[i], options, result, shortened);
+    status = loopThrough(surface, source, extremities[i], options, result, shortened);
     if (!*status) break;
-    lastFailedKey = key;
+    lastFailedKey = extremities[i].key;
   }
   clock.lap("loop");
   if (*status) return fail(result, status, result.message);
@@ -129,7 +171,9 @@ SeparatorResult computeSeparator(Surface& surface, size_t source, const Options&
   result.length = shortened.length;
   result.areas = shortened.areas;
   result.score = separatorScore(result.areas, result.length);
-  result.centroidInside = windingNumber(surface.geometry(), loopCentroid(result.loop)) > 0.5;
+  // The test drops loops that wind around the outside of a concave bend. A path ending on the boundary
+  // lies across a sheet, which has no inside (its winding number is about 0 everywhere): it passes.
+  result.centroidInside = !result.closed || windingNumber(surface.geometry(), loopCentroid(result.loop, true)) > 0.5;
   clock.lap("measures");
   return result;
 }

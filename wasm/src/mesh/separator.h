@@ -6,6 +6,7 @@
 #include "mesh/surface.h"
 #include "mesh/trace.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -16,12 +17,19 @@ namespace cscd {
 // Stage 1 of CSCD-M for one source, with every intermediate result kept for the teaching views.
 struct SeparatorResult {
   size_t source = 0;
-  std::string status = "ok"; // or no-cut-locus | no-target | trace-failed | degenerate-loop | shorten-failed
+  // or no-cut-locus | no-target | trace-failed | degenerate-loop | shorten-failed | not-separating
+  std::string status = "ok";
   std::string message;
 
   std::vector<double> distance;
   CutLocus cutLocus;
+  // Boundary vertices where the distance gradient is normal to the boundary (mesh/boundary.h).
+  std::vector<size_t> boundaryExtremities;
+  // The separator runs through a cut-locus target (a closed loop) or between two boundary extremities
+  // on one boundary loop (an open path, closed = false); the nearer of the two kinds is tried first.
   std::optional<size_t> target;
+  std::optional<std::array<size_t, 2>> ends;
+  bool closed = true;
   int attempts = 0; // targets tried (the nearest first; farther ones when a loop was degenerate)
   TracedLoop traced;
   std::vector<geometrycentral::Vector3> firstPath, secondPath, approxLoop, loop; // polylines on the surface

@@ -101,8 +101,11 @@ Patch buildPatch(IntrinsicTriangulation& intrinsic, const std::vector<char>& sel
   return patch;
 }
 
-// A point of the patch as a point of the intrinsic triangulation (barycentric in the matching face).
+// A point of the patch as a point of the intrinsic triangulation: a vertex as the matching vertex (a
+// face point at a corner would be traced across the face, which lands off the corner on the boundary),
+// other points barycentric in the matching face.
 SurfacePoint toIntrinsic(const Patch& patch, const SurfacePoint& onPatch) {
+  if (onPatch.type == SurfacePointType::Vertex) return SurfacePoint(patch.toIntrinsic[onPatch.vertex.halfedge()].tailVertex());
   SurfacePoint p = onPatch.inSomeFace();
   Halfedge ph = p.face.halfedge();
   Halfedge ih[3] = {patch.toIntrinsic[ph], patch.toIntrinsic[ph.next()], patch.toIntrinsic[ph.next().next()]};
@@ -159,7 +162,7 @@ Halfedge intrinsicHalfedge(ManifoldSurfaceMesh& mesh, size_t a, size_t b) {
 }
 
 ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPositionGeometry& inputGeometry,
-                          const std::vector<size_t>& loopVertices, const std::optional<Sphere>& sphere) {
+                          const std::vector<size_t>& loopVertices, bool closed, const std::optional<Sphere>& sphere) {
   ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
   ShortenedLoop result;
   const size_t n = loopVertices.size();
@@ -182,7 +185,7 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
   std::vector<Halfedge> loop;
   try {
     patch = std::make_unique<Patch>(buildPatch(intrinsic, selected));
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i + (closed ? 0 : 1) < n; i++) {
       Halfedge ih = intrinsicHalfedge(mesh, loopVertices[i], loopVertices[(i + 1) % n]);
       if (ih == Halfedge()) throw std::runtime_error("the loop jumps between vertices that share no edge");
       Halfedge ph = ih.isInterior() ? patch->fromIntrinsic[ih] : patch->fromIntrinsic[ih.twin()].twin();
@@ -200,7 +203,7 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
   // A loop around no feature shrinks to nothing, or to a path that runs back over its own edges.
   std::vector<Halfedge> path = network.paths.empty() ? std::vector<Halfedge>() : network.paths[0]->getHalfedgeList();
   std::set<Halfedge> onPath(path.begin(), path.end());
-  bool doubledBack = std::all_of(path.begin(), path.end(), [&](Halfedge he) { return onPath.count(he.twin()) > 0; });
+  bool doubledBack = closed && std::all_of(path.begin(), path.end(), [&](Halfedge he) { return onPath.count(he.twin()) > 0; });
   if (path.empty() || doubledBack || !(network.length() > 1e-9 * initialLength)) {
     result.failure = "the loop shrank to a point: it encloses no feature inside the constraint region";
     return result;
@@ -211,7 +214,7 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
   std::vector<std::vector<SurfacePoint>> polylines = network.getPathPolyline();
   std::vector<SurfacePoint>& onPatch = polylines.front();
   const SurfacePoint &first = onPatch.front(), &last = onPatch.back();
-  if (onPatch.size() > 1 && first.type == SurfacePointType::Vertex && last.type == SurfacePointType::Vertex &&
+  if (closed && onPatch.size() > 1 && first.type == SurfacePointType::Vertex && last.type == SurfacePointType::Vertex &&
       first.vertex == last.vertex)
     onPatch.pop_back(); // closed: the last point repeats the first
   for (const SurfacePoint& p : onPatch) result.loop.push_back(intrinsic.equivalentPointOnInput(toIntrinsic(*patch, p)));

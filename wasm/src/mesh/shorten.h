@@ -17,10 +17,11 @@ struct Sphere {
 };
 
 struct ShortenedLoop {
-  // Closed polyline on the input mesh (the first point is not repeated at the end).
+  // Polyline on the input mesh; closed ones do not repeat the first point at the end.
   std::vector<geometrycentral::surface::SurfacePoint> loop;
   double length = 0;                  // geodesic length
-  std::array<double, 2> areas{0, 0};  // the two sides inside the constraint region, smaller first
+  std::array<double, 2> areas{0, 0};  // the two sides inside the constraint region, smaller first;
+                                      // (0, area of the region) when it does not separate the region
   std::string failure;                // empty on success
 };
 
@@ -30,9 +31,12 @@ struct ShortenedLoop {
 // around the loop's own vertices: no flip can involve a vertex outside, and the patch boundary stops
 // the loop from sliding away. Without one, the patch is the whole surface. The patch is built per
 // loop, so the cost follows the size of the constraint region, and `intrinsic` is never modified.
+// An open path (closed = false, from a boundary extremity to another) is shortened with its two ends
+// held: they are minima of the distance along the boundary, where a geodesic from the source meets
+// the boundary at a right angle, as a shortest cross-section does.
 ShortenedLoop shortenLoop(geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic,
                           geometrycentral::surface::VertexPositionGeometry& inputGeometry,
-                          const std::vector<size_t>& loopVertices, const std::optional<Sphere>& sphere);
+                          const std::vector<size_t>& loopVertices, bool closed, const std::optional<Sphere>& sphere);
 
 // The intrinsic halfedge from a to b (the first one, should the triangulation have parallel edges).
 geometrycentral::surface::Halfedge intrinsicHalfedge(geometrycentral::surface::ManifoldSurfaceMesh& mesh, size_t a,

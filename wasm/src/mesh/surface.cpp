@@ -1,5 +1,7 @@
 #include "mesh/surface.h"
 
+#include "mesh/boundary.h"
+
 using namespace geometrycentral;
 using namespace geometrycentral::surface;
 
@@ -14,6 +16,7 @@ Surface::Surface(const MeshArrays& arrays) : check(checkMesh(arrays)) {
   for (size_t f = 0; f < nF; f++)
     polygons[f] = {arrays.triangles[3 * f], arrays.triangles[3 * f + 1], arrays.triangles[3 * f + 2]};
   inputMesh = std::make_unique<ManifoldSurfaceMesh>(polygons);
+  boundary = cscd::boundaryLoops(*inputMesh);
 
   VertexData<Vector3> positions(*inputMesh);
   for (size_t v = 0; v < nV; v++)

@@ -29,6 +29,8 @@ public:
   geometrycentral::surface::VertexPositionGeometry& geometry() { return *inputGeometry; }
   geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic() { return *intrinsicTriangulation; }
   Geodesics& geodesics() { return *geodesicSolver; }
+  // The boundary loops, each as its vertices in order (mesh/boundary.h).
+  const std::vector<std::vector<size_t>>& boundaryLoops() const { return boundary; }
   // Per-mesh data of the cut-locus detector, built on first use (not every caller needs it).
   const CutLocusSolver& cutLocusSolver();
 
@@ -39,6 +41,7 @@ private:
   std::unique_ptr<geometrycentral::surface::SignpostIntrinsicTriangulation> intrinsicTriangulation;
   std::unique_ptr<Geodesics> geodesicSolver;
   std::unique_ptr<CutLocusSolver> cutLocus;
+  std::vector<std::vector<size_t>> boundary;
 };
 
 } // namespace cscd

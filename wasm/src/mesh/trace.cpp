@@ -70,6 +70,22 @@ bool descend(ManifoldSurfaceMesh& mesh, const std::vector<double>& distance, siz
   return true;
 }
 
+// Both descents end at the source; each is cut at the first vertex they share after their start.
+void joinDescents(TracedLoop& traced) {
+  std::unordered_set<size_t> onFirst(traced.firstPath.begin() + 1, traced.firstPath.end());
+  size_t meet = 1;
+  while (!onFirst.count(traced.secondPath[meet])) meet++;
+  const size_t meeting = traced.secondPath[meet];
+  traced.secondPath.resize(meet + 1);
+  traced.firstPath.resize(size_t(std::find(traced.firstPath.begin(), traced.firstPath.end(), meeting) -
+                                 traced.firstPath.begin()) +
+                          1);
+  traced.loop = traced.firstPath;
+  // A loop leaves out the target at the end (it closes there); a path ends at its second end.
+  const size_t last = traced.closed ? 1 : 0;
+  for (size_t k = traced.secondPath.size() - 1; k-- > last;) traced.loop.push_back(traced.secondPath[k]);
+}
+
 } // namespace
 
 TracedLoop traceApproximateLoop(ManifoldSurfaceMesh& mesh, const std::vector<double>& distance,
@@ -86,20 +102,27 @@ TracedLoop traceApproximateLoop(ManifoldSurfaceMesh& mesh, const std::vector<dou
     traced.failure = "steepest descent stopped at a local minimum of the distance";
     return traced;
   }
-
-  // Both paths end at the source; cut them at the first vertex they share after the target.
-  std::unordered_set<size_t> onFirst(traced.firstPath.begin() + 1, traced.firstPath.end());
-  size_t meet = 1;
-  while (!onFirst.count(traced.secondPath[meet])) meet++;
-  const size_t meeting = traced.secondPath[meet];
-  traced.secondPath.resize(meet + 1);
-  traced.firstPath.resize(size_t(std::find(traced.firstPath.begin(), traced.firstPath.end(), meeting) -
-                                 traced.firstPath.begin()) +
-                          1);
-
-  traced.loop = traced.firstPath;
-  for (size_t k = traced.secondPath.size() - 2; k >= 1; k--) traced.loop.push_back(traced.secondPath[k]);
+  joinDescents(traced);
   if (traced.loop.size() < 3) traced.failure = "the traced loop is degenerate";
+  return traced;
+}
+
+TracedLoop traceApproximatePath(ManifoldSurfaceMesh& mesh, const std::vector<double>& distance,
+                                std::array<size_t, 2> ends, size_t source) {
+  TracedLoop traced;
+  traced.closed = false;
+  traced.firstPath = {ends[0]};
+  traced.secondPath = {ends[1]};
+  if (!descend(mesh, distance, source, traced.firstPath) || !descend(mesh, distance, source, traced.secondPath)) {
+    traced.failure = "steepest descent stopped at a local minimum of the distance";
+    return traced;
+  }
+  auto passes = [](const std::vector<size_t>& path, size_t v) { return std::find(path.begin(), path.end(), v) != path.end(); };
+  if (passes(traced.firstPath, ends[1]) || passes(traced.secondPath, ends[0])) {
+    traced.failure = "one boundary end lies on the descent from the other";
+    return traced;
+  }
+  joinDescents(traced);
   return traced;
 }
 

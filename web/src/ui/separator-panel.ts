@@ -18,6 +18,7 @@ export function reachedStage(status: SeparatorStatus): StageKey {
       return 'paths';
     case 'degenerate-loop':
     case 'shorten-failed':
+    case 'not-separating':
     case 'ok':
       return 'loop';
   }
@@ -59,7 +60,10 @@ export function showSeparatorFigures(reply: SeparatorReply | null, isolineSpacin
   const head = document.createElement('strong');
   head.textContent = done ? 'Separator found' : `Stopped at ${humanize(reached)} · ${s.status}`;
   const body = document.createElement('span');
-  body.textContent = done ? `Loop of length ${formatLength(s.length)} around the part the target lies on.` : s.message || 'The core gave no reason.';
+  const what = s.closed
+    ? `Loop of length ${formatLength(s.length)} around the part the target lies on.`
+    : `Path of length ${formatLength(s.length)} across the sheet, between two points of its boundary.`;
+  body.textContent = done ? what : s.message || 'The core gave no reason.';
   outcome.replaceChildren(head, body);
 
   set('timing-separator', formatMs(reply.timings.separatorMs));
@@ -70,6 +74,7 @@ export function showSeparatorFigures(reply: SeparatorReply | null, isolineSpacin
 export function separatorCaption(key: StageKey, reply: SeparatorReply): string {
   const s = reply.separator;
   let extra = '';
+  if (key === 'paths' && s.ends !== null) extra += ' Here the nearest were two boundary points facing each other: the separator is an open path.';
   if (key === 'paths' && s.target !== null) {
     extra += ` Chosen ${reply.options.target === 'euclid' ? 'in space (Euclidean)' : 'along the surface (geodesic)'}`;
     extra += s.attempts > 1 ? `; ${s.attempts} targets were tried, the loops of the nearer ones enclosed nothing.` : '.';

@@ -1,4 +1,7 @@
-/** The viewer layers of one stage-1 run: cut locus, target, paths, loops, constraint sphere. */
+/**
+ * The viewer layers of one stage-1 run: cut locus and boundary extremities, target (or the two
+ * boundary ends of an open separator), paths, loops, constraint sphere.
+ */
 import * as THREE from 'three';
 import type { SeparatorData } from '../worker/protocol.ts';
 import { COLORS } from '../stage-defs.ts';
@@ -12,7 +15,7 @@ export interface NamedLayer {
 }
 
 /** Tube radii as fractions of the mesh's bounding-sphere radius. */
-const RADIUS = { cutLocus: 0.0042, path: 0.0058, approxLoop: 0.0072, loop: 0.0105, target: 0.03 };
+const RADIUS = { cutLocus: 0.0042, extremity: 0.014, path: 0.0058, approxLoop: 0.0072, loop: 0.0105, target: 0.03 };
 
 /** Every layer the run has data for (a failed run has fewer). */
 export function separatorLayers(s: SeparatorData, surface: SurfaceLayer): NamedLayer[] {
@@ -38,13 +41,24 @@ export function separatorLayers(s: SeparatorData, surface: SurfaceLayer): NamedL
     });
   }
 
-  if (s.targetPoint) {
-    const r = RADIUS.target * R;
-    const p = new THREE.Vector3(...s.targetPoint);
-    const v = surface.nearestVertex(p);
-    if (v >= 0) p.addScaledVector(surface.vertexNormal(v), 0.35 * r);
-    out.push({ name: 'target', layer: new SpheresLayer('Target', p.toArray(), r, COLORS.target), color: COLORS.target });
-  }
+  // Points on the surface as ball centres, each lifted along its nearest vertex's normal.
+  const balls = (name: string, label: string, points: ArrayLike<number>, radius: number, color: string) => {
+    if (points.length < 3) return;
+    const r = radius * R;
+    const centres = Float32Array.from(points);
+    const p = new THREE.Vector3();
+    for (let i = 0; i < centres.length / 3; i++) {
+      p.fromArray(centres, 3 * i);
+      const v = surface.nearestVertex(p);
+      if (v >= 0) p.addScaledVector(surface.vertexNormal(v), 0.35 * r);
+      p.toArray(centres, 3 * i);
+    }
+    out.push({ name, layer: new SpheresLayer(label, centres, r, color), color });
+  };
+  // Where the distance is lowest along the boundary: candidate ends of open separators (Sec. 3.2).
+  balls('boundary-extremities', 'Boundary extremities', s.boundaryExtremities.points, RADIUS.extremity, COLORS.cutLocus);
+  if (s.targetPoint) balls('target', 'Target', s.targetPoint, RADIUS.target, COLORS.target);
+  if (s.endPoints) balls('target', 'Boundary ends', s.endPoints, RADIUS.target, COLORS.target);
 
   const tube = (name: string, label: string, points: Float32Array, closed: boolean, radius: number, color: string) => {
     if (points.length < 6) return;
@@ -54,7 +68,7 @@ export function separatorLayers(s: SeparatorData, surface: SurfaceLayer): NamedL
   };
   tube('path-1', 'Path 1', s.paths[0], false, RADIUS.path, COLORS.path1);
   tube('path-2', 'Path 2', s.paths[1], false, RADIUS.path, COLORS.path2);
-  tube('approx-loop', 'Approximate loop', s.approxLoop, true, RADIUS.approxLoop, COLORS.approxLoop);
+  tube('approx-loop', s.closed ? 'Approximate loop' : 'Approximate path', s.approxLoop, s.closed, RADIUS.approxLoop, COLORS.approxLoop);
 
   if (s.sphere) {
     out.push({
@@ -64,6 +78,6 @@ export function separatorLayers(s: SeparatorData, surface: SurfaceLayer): NamedL
     });
   }
 
-  tube('loop', 'Loop', s.loop, true, RADIUS.loop, COLORS.loop);
+  tube('loop', s.closed ? 'Loop' : 'Path', s.loop, s.closed, RADIUS.loop, COLORS.loop);
   return out;
 }

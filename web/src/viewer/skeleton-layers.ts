@@ -31,10 +31,11 @@ export class LoopSet {
     private readonly lift: number,
   ) {}
 
-  add(loop: Float32Array): void {
-    if (loop.length < 9) return; // failed source (empty) or degenerate
+  /** `closed` false: an open path ending on the mesh boundary. */
+  add(loop: Float32Array, closed: boolean): void {
+    if (loop.length < (closed ? 9 : 6)) return; // failed source (empty) or degenerate
     const lifted = liftOffSurface(loop, this.surface, this.lift);
-    this.segments.push(polylineSegments(lifted, true));
+    this.segments.push(polylineSegments(lifted, closed));
   }
 
   get count(): number {
@@ -105,7 +106,7 @@ export function* skeletonLayers(s: SkeletonData, surface: SurfaceLayer): Generat
   ] as const) {
     const loops = new LoopSet(surface, radius * R * 0.6);
     s.candidates.loops.forEach((loop, i) => {
-      if ((s.candidates.fates[i] === 'packed') === packed) loops.add(loop);
+      if ((s.candidates.fates[i] === 'packed') === packed) loops.add(loop, s.candidates.closed[i] === 1);
     });
     if (loops.count > 0) yield { name, layer: loops.layer(label, color, radius * R), color };
   }

@@ -263,8 +263,10 @@ export interface PipelineNews {
   done: number;
   total: number;
   finished: boolean;
-  /** The loops found by this step's sources (empty for failed sources), xyz triples, closed. */
+  /** The loops found by this step's sources (empty for failed sources), xyz triples. */
   newLoops: Float32Array[];
+  /** Per new loop: 1 closed, 0 an open path ending on the mesh boundary. */
+  newClosed: Uint8Array;
 }
 
 /** Intermediate news about a request; `fraction` in [0, 1] when the stage can measure itself. */

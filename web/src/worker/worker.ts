@@ -307,6 +307,7 @@ function skeletonToWire(s: Skeleton): SkeletonData {
     candidates: {
       sources: Uint32Array.from(s.candidates.sources ?? []),
       loops: (s.candidates.loops ?? []).map(f32),
+      closed: Uint8Array.from(s.candidates.closed ?? []),
       scores: Float64Array.from(s.candidates.scores ?? []),
       fates: [...(s.candidates.fates ?? [])],
     },
@@ -335,6 +336,7 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
       stage1Ms += ms;
       steps++;
       const newLoops = (p.newLoops ?? []).map(f32);
+      const newClosed = Uint8Array.from(p.newClosed ?? []);
       post(
         {
           type: 'progress',
@@ -342,9 +344,9 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
           stage: 'sources',
           message: `stage 1: ${p.done} / ${p.total} sources`,
           fraction: p.total > 0 ? p.done / p.total : undefined,
-          pipeline: { done: p.done, total: p.total, finished: p.finished, newLoops },
+          pipeline: { done: p.done, total: p.total, finished: p.finished, newLoops, newClosed },
         },
-        transferables(...newLoops),
+        transferables(...newLoops, newClosed),
       );
       if (p.finished || (p.total > 0 && p.done >= p.total)) break;
       k = nextStepSize(k, ms);
@@ -435,6 +437,7 @@ function write(request: WriteRequest): void {
     request.what === 'separators-obj'
       ? writeLoopsObj(
           Array.from(skeleton.packed, (i) => skeleton.candidates.loops[i]),
+          Array.from(skeleton.packed, (i) => skeleton.candidates.closed[i]),
           [`CSCD packed separators of ${request.mesh}`, `options ${JSON.stringify(options)}`],
         )
       : SKELETON_WRITERS[request.what](skeleton, { mesh: request.mesh, options });

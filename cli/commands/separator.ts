@@ -13,7 +13,11 @@ export interface SeparatorJson {
   message: string;
   distance: number[];
   cutLocus: { points: Point[]; edges: [number, number][]; vertices: number[]; root: number; cycleRank: number };
+  boundaryExtremities: Point[];
   target: Point | null;
+  /** The two boundary points an open separator (closed: false) runs between; null for a loop. */
+  ends: [Point, Point] | null;
+  closed: boolean;
   paths: [Point[], Point[]];
   approxLoop: Point[];
   loop: Point[];
@@ -199,7 +203,10 @@ export function separatorJson(result: Separator, options: Options): SeparatorJso
       root: result.cutLocus.root,
       cycleRank: result.cutLocus.cycleRank,
     },
+    boundaryExtremities: toPoints(result.boundaryExtremities.points),
     target: result.targetPoint ? [...result.targetPoint] : null,
+    ends: result.endPoints ? (toPoints(result.endPoints) as [Point, Point]) : null,
+    closed: result.closed,
     paths: [toPoints(result.paths[0]), toPoints(result.paths[1])],
     approxLoop: toPoints(result.approxLoop),
     loop: toPoints(result.loop),
@@ -224,7 +231,7 @@ export const separator: Command = {
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
   details: [
-    'Writes {source, status, message, distance, cutLocus, target, paths, approxLoop, loop, sphere,',
+    'Writes {source, status, message, distance, cutLocus, boundaryExtremities, target, ends, closed, paths, approxLoop, loop, sphere,',
     'approxLength, length, areas, score, centroidInside, timings, options} (see docs/cli.md). A source',
     'without a separator is not an error: status tells why, with a warning on stderr and exit code 0.',
   ].join('\n'),

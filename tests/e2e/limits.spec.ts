@@ -90,17 +90,29 @@ test('a 1M-face mesh shows in seconds, the page offers to decimate it, and the s
   await expect(page.getByTestId('error')).toBeHidden();
 });
 
-test('a cancel while the geodesic solver opens replaces the worker and keeps the mesh', async ({ page }) => {
+test('a cancel stops a decimation between steps, and the opening of the solver by replacing the worker; the mesh stays', async ({ page }) => {
   test.setTimeout(120_000);
   await openPage(page);
   await openFile(page, big.file);
   await expect(page.getByTestId('facts-faces')).toHaveText(String(big.faces), { timeout: SHOW_BOUND_MS });
+  const cancel = page.getByTestId('status-cancel');
+
+  // Decimation yields between steps: it stops at once, the offer stays.
+  await page.getByTestId('limit-decimate').click();
+  await expect(page.getByTestId('status')).toContainText('decimating:');
+  const decimating = Date.now();
+  await cancel.click();
+  await waitForState(page, 'ready');
+  expect(Date.now() - decimating, 'stopped between two steps, before the grace period').toBeLessThan(2_500);
+  await expect(page.getByTestId('limit-offer')).toBeVisible();
+  await expect(page.getByTestId('facts-faces')).toHaveText(String(big.faces));
+  await expect(page.getByTestId('error')).toBeHidden();
+
   await page.getByTestId('limit-full').click();
   await expect(page.getByTestId('limit-offer')).toBeHidden();
 
   await page.getByTestId('random-source').click();
   await expect(page.getByTestId('status')).toContainText('preparing the geodesic solver…');
-  const cancel = page.getByTestId('status-cancel');
   await expect(cancel).toBeVisible();
   const cancelled = Date.now();
   await cancel.click();

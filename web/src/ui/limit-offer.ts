@@ -29,16 +29,15 @@ export class LimitOffer {
     return !this.box.hidden;
   }
 
-  /** Shows the offer for a mesh above the limit (hides it otherwise); returns whether it is shown. */
-  show(faces: number, vertices: number): boolean {
+  /** Shows the offer for a mesh above the limit, hides it otherwise. */
+  show(faces: number, vertices: number): void {
     const warning = sizeWarning(faces, vertices);
     this.box.hidden = warning === null;
-    if (warning === null) return false;
+    if (warning === null) return;
     byTestId('limit-offer-text').textContent = `${warning.charAt(0).toUpperCase()}${warning.slice(1)}. Decimating it first keeps every stage quick; the genus, components and holes are kept.`;
     this.target.max = String(faces - 1);
     this.target.value = String(DECIMATE_TARGET);
     this.label();
-    return true;
   }
 
   hide(): void {

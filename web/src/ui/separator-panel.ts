@@ -80,6 +80,7 @@ export function separatorCaption(key: StageKey, reply: SeparatorReply): string {
     extra += s.attempts > 1 ? `; ${s.attempts} targets were tried, the loops of the nearer ones enclosed nothing.` : '.';
   }
   if (key === 'loop' && !s.sphere) extra += ' The sphere constraint is switched off: the loop was shortened without it.';
+  if (key === 'loop' && !s.closed) extra += ' Here the separator is an open path: its two ends stay on the boundary while the edge flips shorten it.';
   if (key === reachedStage(s.status) && s.status !== 'ok') extra += ` Stage 1 stopped here: ${s.message || s.status}.`;
   return extra;
 }

@@ -23,6 +23,11 @@ const BENT = sheet([-2, 2], [-0.4, 0.4], 0.04, (x, y) => Math.abs(x) < 2 && Math
   y,
 ]);
 
+/** A flat ring, radii 0.6 and 1: two boundary loops, its middle circle at radius 0.8. */
+const WASHER = sheet([-1, 1], [-1, 1], 0.04, (x, y) => Math.hypot(x, y) < 1 && Math.hypot(x, y) > 0.6);
+/** A 3 x 2 plate with a 2.2 x 1.2 window: four bars 0.4 wide, their middle lines at x = +-1.3, y = +-0.8. */
+const FRAME = sheet([-1.5, 1.5], [-1, 1], 0.04, (x, y) => Math.abs(x) < 1.5 && Math.abs(y) < 1 && !(Math.abs(x) < 1.1 && Math.abs(y) < 0.6));
+
 let core: Core;
 const open: Surface[] = [];
 beforeAll(async () => {
@@ -167,6 +172,28 @@ describe('the skeleton of an open surface', () => {
     expect(leaves).toHaveLength(4);
     for (const tip of [[1.5, 0], [-1.5, 0], [0, 1.5], [0, -1.5]])
       expect(Math.min(...leaves.map((p) => Math.hypot(p[0] - tip[0], p[1] - tip[1])))).toBeLessThan(0.3);
+  });
+
+  it('of a washer is one cycle on its middle circle, from paths between its two boundary loops', () => {
+    const skeleton = surfaceOf(WASHER).skeleton({});
+    expect(skeleton.stats.cycles).toBe(1);
+    expect(degrees(skeleton).every((d) => d === 2)).toBe(true);
+    for (let i = 0; i < skeleton.radii.length; i++) {
+      const [x, y] = point(skeleton.nodes, i);
+      expect(Math.abs(Math.hypot(x, y) - 0.8)).toBeLessThan(0.04);
+    }
+    for (const i of skeleton.packed) expect(skeleton.candidates.closed[i]).toBe(0);
+  });
+
+  it('of a frame is one cycle along the middle lines of its four bars', () => {
+    const skeleton = surfaceOf(FRAME).skeleton({});
+    expect(skeleton.stats.cycles).toBe(1);
+    expect(degrees(skeleton).every((d) => d === 2)).toBe(true);
+    for (let i = 0; i < skeleton.radii.length; i++) {
+      const [x, y] = point(skeleton.nodes, i);
+      // On a bar's middle line: |x| = 1.3 or |y| = 0.8 (corners: both within the bar).
+      expect(Math.min(Math.abs(Math.abs(x) - 1.3), Math.abs(Math.abs(y) - 0.8))).toBeLessThan(0.05);
+    }
   });
 
   it('of a bent strip follows its middle line', () => {

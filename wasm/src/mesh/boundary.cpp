@@ -1,5 +1,6 @@
 #include "mesh/boundary.h"
 
+#include "mesh/measures.h"
 #include "mesh/target.h"
 
 #include <algorithm>
@@ -83,18 +84,24 @@ std::vector<BoundaryExtremity> boundaryExtremities(const std::vector<std::vector
 
 std::vector<BoundaryPair> opposedExtremities(const std::vector<BoundaryExtremity>& extremities,
                                              VertexPositionGeometry& geometry, const std::vector<double>& distance,
-                                             size_t source, TargetMode mode) {
+                                             size_t source, TargetMode mode, bool acrossLoops) {
   std::vector<BoundaryPair> pairs;
   for (size_t a = 0; a < extremities.size(); a++)
     for (size_t b = a + 1; b < extremities.size(); b++) {
       const BoundaryExtremity &ea = extremities[a], &eb = extremities[b];
-      if (ea.loop != eb.loop || !(norm(ea.gradient + eb.gradient) < kMaxGradientSum)) continue;
+      if ((ea.loop != eb.loop && !acrossLoops) || !(norm(ea.gradient + eb.gradient) < kMaxGradientSum)) continue;
       double key = std::max(targetKey(geometry, distance, source, ea.vertex, mode),
                             targetKey(geometry, distance, source, eb.vertex, mode));
       pairs.push_back({{ea.vertex, eb.vertex}, key});
     }
   std::stable_sort(pairs.begin(), pairs.end(), [](const BoundaryPair& x, const BoundaryPair& y) { return x.key < y.key; });
   return pairs;
+}
+
+bool sheetAround(VertexPositionGeometry& geometry, size_t vertex, double offset) {
+  geometry.requireVertexNormals();
+  const Vector3 p = geometry.vertexPositions[vertex], n = geometry.vertexNormals[vertex];
+  return std::abs(windingNumber(geometry, p + offset * n) + windingNumber(geometry, p - offset * n)) < 0.5;
 }
 
 } // namespace cscd

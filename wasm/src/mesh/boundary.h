@@ -15,10 +15,12 @@ namespace cscd {
 // where the gradients of the distance from the source point in opposite directions (they cancel, as
 // the gradients arriving from both sides of a cut locus do).
 //
-// Choice where the paper is silent: both ends lie on the *same* boundary loop. Such a path separates
-// the surface (a chord of a disk does), whatever the rest of the shape. A path between two different
-// boundary loops never separates it and would cut through a closed shape between two small holes; the
-// loops around such shapes come from the cut locus, as on closed surfaces.
+// Choices where the paper is silent, for several boundaries: both ends on the *same* boundary loop
+// always qualify: such a path separates the surface (a chord of a disk does). Ends on two different
+// loops (the paper's appendix: "could act as local separator too") qualify only where the surface is a
+// sheet rather than the wall of a solid (sheetAround): across the bar of a flat frame or a washer they
+// are the only separators, while on a closed shape with small holes (torus_two_holes_open) such a
+// path would cut the tube between two holes, and the loop around the tube comes from the cut locus.
 
 // The boundary loops of the mesh, each as its vertices in order.
 std::vector<std::vector<size_t>> boundaryLoops(geometrycentral::surface::ManifoldSurfaceMesh& mesh);
@@ -48,9 +50,17 @@ struct BoundaryPair {
 // 60 degrees) nearly so, while at a square corner of a sheet (90 degrees) they are not.
 constexpr double kMaxGradientSum = 1.0;
 
-// Pairs of extremities on one loop whose unit gradients cancel, nearest first.
+// Pairs of extremities whose unit gradients cancel, on one loop (or on any two with `acrossLoops`),
+// nearest first.
 std::vector<BoundaryPair> opposedExtremities(const std::vector<BoundaryExtremity>& extremities,
                                              geometrycentral::surface::VertexPositionGeometry& geometry,
-                                             const std::vector<double>& distance, size_t source, TargetMode mode);
+                                             const std::vector<double>& distance, size_t source, TargetMode mode,
+                                             bool acrossLoops);
+
+// Whether the surface at a vertex is a sheet rather than the wall of a solid. The generalised winding
+// number jumps by one across any surface; beside the wall of a solid (closed, or with small holes) it
+// goes from about 0 outside to about 1 inside, beside a sheet from about -1/2 to 1/2. It is taken at
+// `offset` along the vertex normal on either side; a sum below 1/2 is a sheet.
+bool sheetAround(geometrycentral::surface::VertexPositionGeometry& geometry, size_t vertex, double offset);
 
 } // namespace cscd

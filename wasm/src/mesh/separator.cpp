@@ -5,6 +5,8 @@
 #include "mesh/measures.h"
 #include "mesh/target.h"
 
+#include <algorithm>
+
 using namespace geometrycentral;
 using namespace geometrycentral::surface;
 
@@ -74,7 +76,12 @@ std::vector<Extremity> rankExtremities(Surface& surface, size_t source, const Op
       boundaryExtremities(surface.boundaryLoops(), geometry, result.distance,
                           kExtremityWindow * surface.facts().meanEdgeLength);
   for (const BoundaryExtremity& e : extremities) result.boundaryExtremities.push_back(e.vertex);
-  for (const BoundaryPair& pair : opposedExtremities(extremities, geometry, result.distance, source, options.target))
+  // The winding-number test costs a pass over the faces: only made when two loops have extremities.
+  bool severalLoops = std::any_of(extremities.begin(), extremities.end(),
+                                  [&](const BoundaryExtremity& e) { return e.loop != extremities.front().loop; });
+  bool acrossLoops = severalLoops && sheetAround(geometry, source, kExtremityWindow * surface.facts().meanEdgeLength);
+  for (const BoundaryPair& pair :
+       opposedExtremities(extremities, geometry, result.distance, source, options.target, acrossLoops))
     ranked.push_back({pair.key, pair.ends[0], pair.ends});
   std::stable_sort(ranked.begin(), ranked.end(), [](const Extremity& a, const Extremity& b) { return a.key < b.key; });
   return ranked;

@@ -174,26 +174,19 @@ describe('the skeleton of an open surface', () => {
       expect(Math.min(...leaves.map((p) => Math.hypot(p[0] - tip[0], p[1] - tip[1])))).toBeLessThan(0.3);
   });
 
-  it('of a washer is one cycle on its middle circle, from paths between its two boundary loops', () => {
-    const skeleton = surfaceOf(WASHER).skeleton({});
+  it.each([
+    { name: 'a washer', mesh: WASHER, offMiddle: (x: number, y: number) => Math.abs(Math.hypot(x, y) - 0.8) },
+    // A bar's middle line: |x| = 1.3 or |y| = 0.8 (corners: both).
+    { name: 'a frame', mesh: FRAME, offMiddle: (x: number, y: number) => Math.min(Math.abs(Math.abs(x) - 1.3), Math.abs(Math.abs(y) - 0.8)) },
+  ])('of $name is one cycle along its middle line, from paths between its two boundary loops', ({ mesh, offMiddle }) => {
+    const skeleton = surfaceOf(mesh).skeleton({});
     expect(skeleton.stats.cycles).toBe(1);
     expect(degrees(skeleton).every((d) => d === 2)).toBe(true);
     for (let i = 0; i < skeleton.radii.length; i++) {
       const [x, y] = point(skeleton.nodes, i);
-      expect(Math.abs(Math.hypot(x, y) - 0.8)).toBeLessThan(0.04);
+      expect(offMiddle(x, y)).toBeLessThan(0.05);
     }
     for (const i of skeleton.packed) expect(skeleton.candidates.closed[i]).toBe(0);
-  });
-
-  it('of a frame is one cycle along the middle lines of its four bars', () => {
-    const skeleton = surfaceOf(FRAME).skeleton({});
-    expect(skeleton.stats.cycles).toBe(1);
-    expect(degrees(skeleton).every((d) => d === 2)).toBe(true);
-    for (let i = 0; i < skeleton.radii.length; i++) {
-      const [x, y] = point(skeleton.nodes, i);
-      // On a bar's middle line: |x| = 1.3 or |y| = 0.8 (corners: both within the bar).
-      expect(Math.min(Math.abs(Math.abs(x) - 1.3), Math.abs(Math.abs(y) - 0.8))).toBeLessThan(0.05);
-    }
   });
 
   it('of a bent strip follows its middle line', () => {

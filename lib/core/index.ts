@@ -176,7 +176,7 @@ export async function createCore(wasmBinary: ArrayBuffer | Uint8Array, settings:
     throw new RangeError(`memoryLimitMB must be between ${CORE_INITIAL_MB} and ${CORE_MAXIMUM_MB}, got ${settings.memoryLimitMB}`);
   }
   const pages = (mb: number) => (mb * 1024 * 1024) / PAGE_BYTES;
-  const moduleSettings: CscdModuleOptions & { wasmMemory: WebAssembly.Memory } = {
+  const moduleSettings: CscdModuleOptions = {
     wasmBinary,
     // The module is linked with -sIMPORTED_MEMORY and takes this memory; its maximum is the cap.
     wasmMemory: new WebAssembly.Memory({ initial: pages(CORE_INITIAL_MB), maximum: pages(limit) }),

@@ -32,6 +32,8 @@ export interface CscdModule {
 
 export interface CscdModuleOptions {
   wasmBinary?: ArrayBuffer | Uint8Array;
+  /** The module's memory (it is linked with -sIMPORTED_MEMORY): its maximum caps the heap. */
+  wasmMemory?: WebAssembly.Memory;
   locateFile?: (path: string, prefix: string) => string;
   print?: (text: string) => void;
   printErr?: (text: string) => void;

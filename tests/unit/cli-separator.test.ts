@@ -13,7 +13,8 @@ const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-separator-'));
 afterAll(() => rmSync(tmp, { recursive: true, force: true }));
 
 const KEYS = [
-  'source', 'status', 'message', 'distance', 'cutLocus', 'target', 'paths', 'approxLoop', 'loop', 'sphere',
+  'source', 'status', 'message', 'distance', 'cutLocus', 'boundaryExtremities', 'target', 'ends', 'closed', 'paths',
+  'approxLoop', 'loop', 'sphere',
   'approxLength', 'length', 'areas', 'score', 'centroidInside', 'timings', 'options',
 ];
 
@@ -67,6 +68,8 @@ describe('cscd separator', () => {
     expect(json.cutLocus.points.every(isPoint)).toBe(true);
     expect(json.cutLocus.edges.flat().every((i) => Number.isInteger(i) && i >= 0 && i < json.cutLocus.points.length)).toBe(true);
     expect(isPoint(json.target)).toBe(true);
+    // A closed surface: no boundary, so a loop, no boundary ends.
+    expect(json).toMatchObject({ boundaryExtremities: [], ends: null, closed: true });
     expect(json.paths).toHaveLength(2);
     expect(json.paths.every((p) => p.length >= 2 && p.every(isPoint))).toBe(true);
     expect(json.sphere).not.toBeNull();
@@ -127,7 +130,7 @@ describe('cscd separator', () => {
     expect(result.status).toBe(0);
     const failed = JSON.parse(result.stdout) as SeparatorJson;
     expect(Object.keys(failed)).toEqual(KEYS);
-    expect(['no-cut-locus', 'no-target', 'trace-failed', 'degenerate-loop', 'shorten-failed']).toContain(failed.status);
+    expect(['no-cut-locus', 'no-target', 'trace-failed', 'degenerate-loop', 'shorten-failed', 'not-separating']).toContain(failed.status);
     expect(failed.message).not.toBe('');
     expect(failed.distance).toHaveLength(mesh.positions.length / 3);
     expect(failed.loop).toEqual([]);

@@ -12,7 +12,7 @@ import { cscd } from './support/cli.ts';
 const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-skeleton-'));
 afterAll(() => rmSync(tmp, { recursive: true, force: true }));
 
-const KEYS = ['mesh', 'nodes', 'radii', 'edges', 'vertexToNode', 'separators', 'stats', 'options'];
+const KEYS = ['mesh', 'nodes', 'radii', 'edges', 'vertexToNode', 'separators', 'separatorsClosed', 'stats', 'options'];
 const STATS = ['n', 'candidates', 'pruned', 'packed', 'cycles', 'seed', 'timings'];
 /** The one part of the JSON that changes from run to run. */
 const withoutTimings = (text: string) => text.replace(/"timings":\{[^{}]*\}/, '"timings":{}');
@@ -56,6 +56,8 @@ describe('cscd skeleton', () => {
 
     expect(json.separators).toHaveLength(json.stats.packed);
     expect(json.separators.every((loop) => loop.length >= 3 && loop.every((p) => p.length === 3 && p.every(Number.isFinite)))).toBe(true);
+    // two_torus is closed: every separator is a loop.
+    expect(json.separatorsClosed).toEqual(json.separators.map(() => true));
     expect(json.stats.packed).toBeGreaterThan(0);
     expect(json.stats.packed).toBeLessThanOrEqual(json.stats.candidates);
     expect(json.stats.candidates).toBeLessThanOrEqual(json.stats.n);

@@ -99,6 +99,20 @@ describe('a separator on a sheet', () => {
     expect(innerPaths).toBe(inner);
   });
 
+  it('has no cut locus along the boundary (a one-sided Laplacian is no ridge)', () => {
+    const uses = new Map<string, number>();
+    for (let f = 0; f < PLUS.triangles.length / 3; f++)
+      for (let k = 0; k < 3; k++) {
+        const [a, b] = [PLUS.triangles[3 * f + k], PLUS.triangles[3 * f + ((k + 1) % 3)]].sort((x, y) => x - y);
+        uses.set(`${a} ${b}`, (uses.get(`${a} ${b}`) ?? 0) + 1);
+      }
+    const onBoundary = new Set([...uses].filter(([, n]) => n === 1).flatMap(([key]) => key.split(' ').map(Number)));
+    const s = surfaceOf(PLUS).separator(vertexNear(PLUS, 0.9, 0.05));
+    // Only the root (the farthest vertex, where the graph is grown from) may lie on the boundary.
+    const onIt = Array.from(s.cutLocus.vertices).filter((v) => v !== s.cutLocus.root && onBoundary.has(v));
+    expect(onIt).toEqual([]);
+  });
+
   it('comes out of the CLI with its ends', () => {
     const folder = mkdtempSync(path.join(tmpdir(), 'cscd-boundary-'));
     const file = path.join(folder, 'strip.off');

@@ -130,6 +130,9 @@ CutLocusSolver::CutLocusSolver(IntrinsicTriangulation& intrinsic) {
     chi[c]--;
     if (edgeFaces[e][0] == NONE || edgeFaces[e][1] == NONE) hasBoundary[c] = true;
   }
+  onBoundary.assign(nVertices, 0);
+  for (size_t e = 0; e < edgeVertices.size(); e++)
+    if (edgeFaces[e][0] == NONE || edgeFaces[e][1] == NONE) onBoundary[edgeVertices[e][0]] = onBoundary[edgeVertices[e][1]] = 1;
   for (const auto& f : faceVertices) chi[vertexComponent[f[0]]]++;
   componentGenus.resize(nComponents);
   for (int c = 0; c < nComponents; c++) componentGenus[c] = hasBoundary[c] ? -1 : (2 - chi[c]) / 2;
@@ -264,7 +267,7 @@ std::vector<char> CutLocusSolver::passingVertices(const std::vector<double>& ang
                                                   const CutLocusOptions& options) const {
   std::vector<char> passing(nVertices, 0);
   for (size_t v = 0; v < nVertices; v++)
-    passing[v] = angleDeviation[v] >= options.angleThreshold && laplacian[v] <= -options.laplacianThreshold;
+    passing[v] = !onBoundary[v] && angleDeviation[v] >= options.angleThreshold && laplacian[v] <= -options.laplacianThreshold;
   return passing;
 }
 

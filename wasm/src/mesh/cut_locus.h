@@ -99,6 +99,10 @@ private:
   std::vector<size_t> cornerStart;
   std::vector<Corner> corners;
   std::vector<double> vertexArea;
+  // Boundary vertices never pass the thresholds: their one-sided Laplacian measures the flux through
+  // the boundary, not a ridge, and would line every hole with cut locus. Separators reach the boundary
+  // through boundary extremities instead (mesh/boundary.h).
+  std::vector<char> onBoundary;
   std::vector<int> vertexComponent;
   std::vector<long> componentGenus; // -1 for components with boundary: no homology step there
 };

@@ -271,17 +271,19 @@ export class Decimator {
   }
 
   private addFaceQuadric(f: number): void {
-    const i = this.triangles[3 * f];
-    const p = this.positions;
-    let [nx, ny, nz] = this.faceCross(f);
+    const normal = this.faceCross(f);
+    // Weighted by area, so large faces pull harder than slivers.
+    const area = Math.hypot(...normal) / 2;
+    for (let c = 0; c < 3; c++) this.addPlaneThrough(this.triangles[3 * f + c], this.triangles[3 * f], normal, area);
+  }
+
+  /** Adds to vertex v's quadric the plane with normal `normal` (any length but zero) through vertex `on`, times `weight`. */
+  private addPlaneThrough(v: number, on: number, [nx, ny, nz]: [number, number, number], weight: number): void {
     const length = Math.hypot(nx, ny, nz);
     if (length === 0) return;
-    nx /= length;
-    ny /= length;
-    nz /= length;
-    const d = -(nx * p[3 * i] + ny * p[3 * i + 1] + nz * p[3 * i + 2]);
-    // Weighted by area, so large faces pull harder than slivers.
-    for (let c = 0; c < 3; c++) addPlane(this.quadrics, 10 * this.triangles[3 * f + c], nx, ny, nz, d, length / 2);
+    const p = this.positions;
+    const d = -(nx * p[3 * on] + ny * p[3 * on + 1] + nz * p[3 * on + 2]) / length;
+    addPlane(this.quadrics, 10 * v, nx / length, ny / length, nz / length, d, weight);
   }
 
   /** The plane through boundary edge a-b perpendicular to its face f, added to both endpoints. */
@@ -290,16 +292,10 @@ export class Decimator {
     const p = this.positions;
     const [fx, fy, fz] = this.faceCross(f);
     const ex = p[3 * b] - p[3 * a], ey = p[3 * b + 1] - p[3 * a + 1], ez = p[3 * b + 2] - p[3 * a + 2];
-    let nx = ey * fz - ez * fy, ny = ez * fx - ex * fz, nz = ex * fy - ey * fx;
-    const length = Math.hypot(nx, ny, nz);
-    if (length === 0) return;
-    nx /= length;
-    ny /= length;
-    nz /= length;
-    const d = -(nx * p[3 * a] + ny * p[3 * a + 1] + nz * p[3 * a + 2]);
+    const normal: [number, number, number] = [ey * fz - ez * fy, ez * fx - ex * fz, ex * fy - ey * fx];
     const weight = BOUNDARY_WEIGHT * (ex * ex + ey * ey + ez * ez);
-    addPlane(this.quadrics, 10 * a, nx, ny, nz, d, weight);
-    addPlane(this.quadrics, 10 * b, nx, ny, nz, d, weight);
+    this.addPlaneThrough(a, a, normal, weight);
+    this.addPlaneThrough(b, a, normal, weight);
   }
 
   /** Makes (x, y, z) this.best when its error under the quadrics of a and b is lower. (No closures in the hot path.) */

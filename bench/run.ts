@@ -1,7 +1,7 @@
 // `npm run bench`: CSCD Studio against the skeletonisers people use instead, timed alike and scored by
 // the same code (bench/README.md says what every column means and why the comparison is fair).
 //
-//   npm run bench [-- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [--cpu N] [folder...]]
+//   npm run bench [-- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [--cpu N] [--no-build] [folder...]]
 //
 // Meshes: every ../shared/data/meshes/*.ply (the quick subset with --quick), plus every .ply/.obj/.off
 // of the folders given; --meshes keeps only the named ones (with or without extension). For each mesh,
@@ -15,7 +15,7 @@ import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
-import { CoreError, loadCoreNode, type Evaluation, type MeshArrays } from '../lib/core/node.ts';
+import { CoreError, loadCoreNode, wasmPath, type Evaluation, type MeshArrays } from '../lib/core/node.ts';
 import { parseMesh } from '../lib/io/index.ts';
 import { parseSkeleton, SkeletonFormatError } from '../lib/io/skeleton.ts';
 import { errorVsSecondsSvg } from './plot.ts';
@@ -63,6 +63,8 @@ class BenchError extends Error {}
 
 interface Config {
   quick: boolean;
+  /** Score the core as it is built (build/wasm), without running scripts/build-wasm.sh first. */
+  noBuild: boolean;
   methods: Method[];
   timeout: number;
   /** The core every method is pinned to (two runs on two idle cores split a long bench). */
@@ -86,11 +88,12 @@ function parseCommandLine(argv: string[]): Config {
       meshes: { type: 'string' },
       timeout: { type: 'string' },
       cpu: { type: 'string' },
+      'no-build': { type: 'boolean', default: false },
       help: { type: 'boolean', short: 'h', default: false },
     },
   });
   if (values.help) {
-    process.stdout.write('usage: npm run bench -- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [--cpu N] [folder...]\n');
+    process.stdout.write('usage: npm run bench -- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [--cpu N] [--no-build] [folder...]\n');
     process.exit(0);
   }
   const quick = values.quick === true;
@@ -122,7 +125,7 @@ function parseCommandLine(argv: string[]): Config {
     meshes = meshes.filter((f) => names.includes(path.basename(f)) || names.includes(stem(f)));
   }
   if (!meshes.length) throw new BenchError('no meshes to run on');
-  return { quick, methods, timeout, cpu, meshes, folders: positionals, argv };
+  return { quick, noBuild: values['no-build'] === true, methods, timeout, cpu, meshes, folders: positionals, argv };
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -345,8 +348,9 @@ function describeMachine(methods: Method[]): string {
 // ---------------------------------------------------------------------------------------------------
 // Main
 
-function prepare(methods: Method[]): void {
-  const steps: [string, string[]][] = [['bash', ['scripts/build-wasm.sh']]];
+function prepare(methods: Method[], noBuild: boolean): void {
+  const steps: [string, string[]][] = noBuild ? [] : [['bash', ['scripts/build-wasm.sh']]];
+  if (noBuild && !existsSync(wasmPath)) throw new BenchError(`--no-build: there is no core at ${path.relative(repoRoot, fileURLToPath(wasmPath))}`);
   const baselines = methods.filter((m) => m !== 'cscd');
   if (baselines.length) steps.push(['bash', ['bench/setup.sh', ...baselines]]);
   for (const [command, args] of steps) {
@@ -358,7 +362,7 @@ function prepare(methods: Method[]): void {
 
 async function main(): Promise<void> {
   const config = parseCommandLine(process.argv.slice(2));
-  prepare(config.methods);
+  prepare(config.methods, config.noBuild);
   const machine = describeMachine(config.methods);
   const name = runName(config.quick);
   const runDir = path.join(repoRoot, '.deps', 'bench', 'runs', name);

@@ -3,8 +3,8 @@
 //
 //   npm run bench [-- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [--cpu N] [--no-build] [folder...]]
 //
-// Meshes: every ../shared/data/meshes/*.ply (the quick subset with --quick), plus every .ply/.obj/.off
-// of the folders given; --meshes keeps only the named ones (with or without extension). For each mesh,
+// Meshes: every ../shared/data/meshes/*.ply and ../shared/data/synthetic/*.ply (the quick subset with
+// --quick), plus every .ply/.obj/.off of the folders given; --meshes keeps only the named ones (with or without extension). For each mesh,
 // the methods run one after the other in a fixed order, each in its own process pinned to one core;
 // then each skeleton is read back and scored by core.evaluate. The table, a CSV and an SVG go to
 // bench/results/<date>[-quick][-N].{md,csv,svg} (rewritten after every mesh, so an interrupted run
@@ -21,14 +21,17 @@ import { parseSkeleton, SkeletonFormatError } from '../lib/io/skeleton.ts';
 import { errorVsSecondsSvg } from './plot.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const sharedMeshes = path.resolve(repoRoot, '..', 'shared', 'data', 'meshes');
+const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
+/** The default meshes: the shared collection, then the synthetic shapes with a known skeleton (`<stem>__GT.json`). */
+const defaultFolders = [path.join(sharedData, 'meshes'), path.join(sharedData, 'synthetic')];
 const resultsDir = path.join(repoRoot, 'bench', 'results');
 
 /**
  * Small meshes of genus 0, 1, 3 and 4 on which every method finishes in well under the quick timeout:
- * LS is the slow one (5-60 s on these; hand.ply, 10k vertices, takes it about 170 s).
+ * LS is the slow one (5-60 s on these; hand.ply, 10k vertices, takes it about 170 s). The two coarse
+ * synthetic shapes add thin tips with a ground truth.
  */
-const QUICK_MESHES = ['elephant_small', 'fertility_9k', 'spot', 'torus', 'wolf'];
+const QUICK_MESHES = ['elephant_small', 'fertility_9k', 'spot', 'torus', 'wolf', 'star8_coarse', 'tree_coarse'];
 const MESH_EXTENSIONS = /\.(ply|obj|off)$/i; // what all four methods read
 const DEFAULT_TIMEOUT = { full: 600, quick: 180 };
 
@@ -113,15 +116,17 @@ function parseCommandLine(argv: string[]): Config {
   for (const folder of positionals) {
     if (!existsSync(folder) || !statSync(folder).isDirectory()) throw new BenchError(`'${folder}' is not a folder`);
   }
-  if (!existsSync(sharedMeshes)) throw new BenchError(`the shared meshes are not at ${sharedMeshes}`);
+  for (const folder of defaultFolders) {
+    if (!existsSync(folder)) throw new BenchError(`the shared meshes are not at ${folder}`);
+  }
 
   const names = list(values.meshes);
   const stem = (file: string) => path.basename(file).replace(MESH_EXTENSIONS, '');
-  const shared = meshFiles(sharedMeshes).filter((f) => names.length > 0 || !quick || QUICK_MESHES.includes(stem(f)));
+  const shared = defaultFolders.flatMap(meshFiles).filter((f) => names.length > 0 || !quick || QUICK_MESHES.includes(stem(f)));
   let meshes = [...shared, ...positionals.flatMap((folder) => meshFiles(path.resolve(folder)))];
   if (names.length) {
     const missing = names.filter((n) => !meshes.some((f) => path.basename(f) === n || stem(f) === n));
-    if (missing.length) throw new BenchError(`no mesh named ${missing.join(', ')} in ${[sharedMeshes, ...positionals].join(', ')}`);
+    if (missing.length) throw new BenchError(`no mesh named ${missing.join(', ')} in ${[...defaultFolders, ...positionals].join(', ')}`);
     meshes = meshes.filter((f) => names.includes(path.basename(f)) || names.includes(stem(f)));
   }
   if (!meshes.length) throw new BenchError('no meshes to run on');

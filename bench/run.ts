@@ -18,6 +18,7 @@ import { parseArgs } from 'node:util';
 import { CoreError, loadCoreNode, wasmPath, type Evaluation, type MeshArrays } from '../lib/core/node.ts';
 import { parseMesh } from '../lib/io/index.ts';
 import { parseSkeleton, SkeletonFormatError } from '../lib/io/skeleton.ts';
+import { median } from './metrics.ts';
 import { errorVsSecondsSvg } from './plot.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
@@ -221,13 +222,6 @@ function ratio(rows: Row[], mesh: string): number | null {
   const seconds = (m: Method) => rows.find((r) => r.mesh === mesh && r.method === m)?.run.seconds ?? null;
   const cscd = seconds('cscd'), msls = seconds('msls');
   return cscd !== null && msls !== null && msls > 0 ? cscd / msls : null;
-}
-
-function median(values: number[]): number | null {
-  if (!values.length) return null;
-  const sorted = [...values].sort((a, b) => a - b);
-  const mid = sorted.length >> 1;
-  return sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
 }
 
 /** The page's responsiveness as tests/e2e/long-tasks.spec.ts last measured it, as one paragraph (null if never run). */

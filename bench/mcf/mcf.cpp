@@ -3,8 +3,11 @@
 //
 //   mcf <mesh.ply|.off|.obj> <skeleton.obj>
 //
-// Writes the skeleton as OBJ (`v x y z` per node, `l i j` per edge, 1-based) and prints, as the last line
-// of stdout, {"seconds": S}: the wall time of the skeleton call alone (reading and writing excluded).
+// Writes the skeleton as OBJ (`v x y z` per node, `l i j` per edge, 1-based), its vertex map beside it as
+// `<skeleton>.map.json` ({"vertexToNode": [...], "positions": [...]}: per mesh vertex the node it was
+// contracted into, -1 for none, with the positions of the mesh's vertices in CGAL's order, in case
+// reading repaired the mesh and renumbered them) and prints, as the last line of stdout,
+// {"seconds": S}: the wall time of the skeleton call alone (reading and writing excluded).
 // Built by bench/setup.sh against Debian's libcgal-dev with Eigen (CGAL_EIGEN3_ENABLED).
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -17,6 +20,8 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <string>
+#include <vector>
 
 using Kernel = CGAL::Simple_cartesian<double>;
 using Point = Kernel::Point_3;
@@ -54,6 +59,24 @@ int main(int argc, char** argv) {
   for (auto e : CGAL::make_range(edges(skeleton))) out << "l " << source(e, skeleton) + 1 << " " << target(e, skeleton) + 1 << "\n";
   out.close();
   if (!out) return fail("cannot write the skeleton file");
+
+  std::vector<long> nodeOf(num_vertices(mesh), -1);
+  for (auto v : CGAL::make_range(vertices(skeleton)))
+    for (auto contracted : skeleton[v].vertices) nodeOf[contracted.idx()] = static_cast<long>(v);
+  const std::string skeletonPath = argv[2];
+  std::ofstream map(skeletonPath.substr(0, skeletonPath.rfind('.')) + ".map.json");
+  map << std::setprecision(17) << "{\"vertexToNode\": [";
+  for (size_t i = 0; i < nodeOf.size(); i++) map << (i ? "," : "") << nodeOf[i];
+  map << "], \"positions\": [";
+  bool first = true;
+  for (auto vd : CGAL::make_range(mesh.vertices())) {
+    const Point& p = mesh.point(vd);
+    map << (first ? "" : ",") << p.x() << "," << p.y() << "," << p.z();
+    first = false;
+  }
+  map << "]}\n";
+  map.close();
+  if (!map) return fail("cannot write the vertex map file");
 
   std::cout << std::setprecision(6) << "{\"seconds\": " << seconds << "}" << std::endl;
   return 0;

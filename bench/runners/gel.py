@@ -3,8 +3,9 @@ Local Separators from PyGEL (pygel3d 0.8.2), with the defaults the authors docum
 
     python gel.py ls|msls <mesh.ply|.obj|.off> <skeleton.obj>
 
-Writes the skeleton as OBJ (`v x y z` per node, `l i j` per edge, 1-based) and prints, as the last line
-of stdout, {"seconds": S}: the wall time of building the mesh's edge graph and skeletonising it
+Writes the skeleton as OBJ (`v x y z` per node, `l i j` per edge, 1-based), its vertex map beside it as
+`<skeleton>.map.json` ({"vertexToNode": [...], "positions": [...]}, see below), and prints, as the last
+line of stdout, {"seconds": S}: the wall time of building the mesh's edge graph and skeletonising it
 (reading and writing excluded).
 """
 import json
@@ -16,9 +17,11 @@ from pygel3d import graph, hmesh
 
 SKELETONISERS = {
     # sampling=True (the default): separators are grown from a sample of the vertices, not all of them.
-    "ls": lambda g: graph.LS_skeleton(g),
+    # The _and_map variants run the same C++ call as LS_skeleton/MSLS_skeleton, which computes the map
+    # either way, so timing them times the same work.
+    "ls": lambda g: graph.LS_skeleton_and_map(g),
     # grow_thresh=64 (the default).
-    "msls": lambda g: graph.MSLS_skeleton(g),
+    "msls": lambda g: graph.MSLS_skeleton_and_map(g),
 }
 
 
@@ -39,19 +42,33 @@ def main() -> int:
         return 1
 
     started = time.perf_counter()
-    skeleton = SKELETONISERS[method](graph.from_mesh(mesh))
+    edge_graph = graph.from_mesh(mesh)
+    skeleton, node_of = SKELETONISERS[method](edge_graph)
     seconds = time.perf_counter() - started
 
-    skeleton.cleanup()  # node indices 0..n-1 without gaps
+    # Nodes numbered 0..n-1 in the order of nodes() (the ones in use), by us rather than by cleanup(),
+    # which renumbers them without saying how, while the map holds the old numbers.
+    used = list(skeleton.nodes())
+    index = {n: i for i, n in enumerate(used)}
     positions = skeleton.positions()
     with open(out_path, "w") as out:
         out.write(f"# PyGEL {method.upper()} skeleton of {mesh_path}\n")
-        for x, y, z in positions:
+        for n in used:
+            x, y, z = positions[n]
             out.write(f"v {float(x)!r} {float(y)!r} {float(z)!r}\n")
-        for n in skeleton.nodes():
+        for n in used:
             for m in skeleton.neighbors(n):
                 if n < m:
-                    out.write(f"l {n + 1} {m + 1}\n")
+                    out.write(f"l {index[n] + 1} {index[m] + 1}\n")
+
+    # The map indexes the nodes of the edge graph, i.e. GEL's vertices, which GEL numbers its own way
+    # (it builds the mesh face by face and stitches coincident corners): the positions it indexes go with
+    # it, so that the bench can match them to the file's vertices.
+    with open(os.path.splitext(out_path)[0] + ".map.json", "w") as out:
+        json.dump({
+            "vertexToNode": [index.get(int(k), -1) for k in node_of],
+            "positions": [float(c) for p in edge_graph.positions() for c in p],
+        }, out)
 
     result_out.write(json.dumps({"seconds": seconds}) + "\n")
     result_out.flush()

@@ -127,9 +127,12 @@ export interface VertexMapRadii {
  * Radii by a method's vertex map (LS's rule): a node's radius is the median distance from it to the
  * mesh vertices mapped to it (-1: unmapped). A node that owns none takes the mean radius of its
  * neighbours that have one, repeated until every node reached from an owning node is set; the nodes of
- * a component that owns no vertex at all take `fallback` (the first rule's radius).
+ * a component that owns no vertex at all take `fallback` (the first rule's radius; without it they
+ * make the map unusable).
  */
-export function vertexMapRadii(positions: ArrayLike<number>, skeleton: Graph, vertexToNode: ArrayLike<number>, fallback: ArrayLike<number>): VertexMapRadii {
+export function vertexMapRadii(
+  positions: ArrayLike<number>, skeleton: Graph, vertexToNode: ArrayLike<number>, fallback: ArrayLike<number> | null,
+): VertexMapRadii {
   const vertexCount = positions.length / 3;
   const nodeCount = skeleton.nodes.length / 3;
   if (vertexToNode.length !== vertexCount) throw new VertexMapError(`map has ${vertexToNode.length} entries for ${vertexCount} vertices`);
@@ -156,12 +159,10 @@ export function vertexMapRadii(positions: ArrayLike<number>, skeleton: Graph, ve
     for (const { i, r } of ring) radii[i] = r;
     fromNeighbours += ring.length;
   }
-  let fromFallback = 0;
-  radii.forEach((r, i) => {
-    if (!Number.isNaN(r)) return;
-    radii[i] = fallback[i];
-    fromFallback++;
-  });
+  const unset = Array.from(radii).flatMap((r, i) => (Number.isNaN(r) ? [i] : []));
+  if (unset.length && !fallback) throw new VertexMapError(`${unset.length} nodes in components that own no vertex, and no other radius for them`);
+  for (const i of unset) radii[i] = (fallback as ArrayLike<number>)[i];
+  const fromFallback = unset.length;
   return { radii, fromNeighbours, fromFallback };
 }
 

@@ -17,8 +17,10 @@ import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { CoreError, loadCoreNode, wasmPath, type Evaluation, type MeshArrays } from '../lib/core/node.ts';
 import { parseMesh } from '../lib/io/index.ts';
-import { parseSkeleton, SkeletonFormatError } from '../lib/io/skeleton.ts';
-import { median } from './metrics.ts';
+import { parseSkeleton, SkeletonFormatError, type ParsedSkeleton } from '../lib/io/skeleton.ts';
+import {
+  compareErrors, leafIndices, mapByPosition, median, tipGap, VertexMapError, vertexMapRadii, type Comparison, type TipGap,
+} from './metrics.ts';
 import { errorVsSecondsSvg } from './plot.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
@@ -34,6 +36,7 @@ const resultsDir = path.join(repoRoot, 'bench', 'results');
  */
 const QUICK_MESHES = ['elephant_small', 'fertility_9k', 'spot', 'torus', 'wolf', 'star8_coarse', 'tree_coarse'];
 const MESH_EXTENSIONS = /\.(ply|obj|off)$/i; // what all four methods read
+const stem = (file: string) => path.basename(file).replace(MESH_EXTENSIONS, '');
 const DEFAULT_TIMEOUT = { full: 600, quick: 180 };
 
 // ---------------------------------------------------------------------------------------------------
@@ -122,7 +125,6 @@ function parseCommandLine(argv: string[]): Config {
   }
 
   const names = list(values.meshes);
-  const stem = (file: string) => path.basename(file).replace(MESH_EXTENSIONS, '');
   const shared = defaultFolders.flatMap(meshFiles).filter((f) => names.length > 0 || !quick || QUICK_MESHES.includes(stem(f)));
   let meshes = [...shared, ...positionals.flatMap((folder) => meshFiles(path.resolve(folder)))];
   if (names.length) {
@@ -189,10 +191,46 @@ function runMethod(method: Method, mesh: string, runDir: string, label: string, 
 /** What the table keeps of an Evaluation (not its per-vertex arrays and surface, which are large). */
 type Figures = Pick<Evaluation, 'reconError' | 'median' | 'p95' | 'nodes' | 'cycles'>;
 
+const figures = ({ reconError, median, p95, nodes, cycles }: Evaluation): Figures => ({ reconError, median, p95, nodes, cycles });
+
 type Score = { ok: true; evaluation: Figures } | { ok: false; reason: string; nodes: number | null };
 
+/** The score with radii from the method's vertex map (rule 2), and how the radii were filled in. */
+type MapScore =
+  | { ok: true; evaluation: Figures; fromNeighbours: number; fromFallback: number; unmapped: number }
+  | { ok: false; reason: string };
+
+/** Ground-truth leaves that are not tips: star8's node 0 is the top of the body, not an arm (../shared/data/synthetic/README.md). */
+const NOT_TIPS: Record<string, number[]> = { star8: [0], star8_coarse: [0] };
+
+/** The tips of the mesh's ground-truth skeleton `<stem>__GT.json` beside it, or null when it has none. */
+function groundTruthTips(meshFile: string): number[][] | null {
+  const file = path.join(path.dirname(meshFile), `${stem(meshFile)}__GT.json`);
+  if (!existsSync(file)) return null;
+  let gt: { nodes: [number, number, number][]; edges: [number, number][] };
+  try {
+    gt = JSON.parse(readFileSync(file, 'utf8')) as typeof gt;
+  } catch (error) {
+    throw new BenchError(`${file}: ${describe(error)}`);
+  }
+  return leafIndices(gt.nodes.length, gt.edges.flat(), NOT_TIPS[stem(meshFile)] ?? []).map((i) => gt.nodes[i]);
+}
+
+/**
+ * A method's vertex map in the mesh's vertex order. cscd's skeleton JSON has it; the baselines write it
+ * beside the skeleton as `<skeleton>.map.json`, with the positions of the vertices it indexes (GEL and
+ * CGAL number the vertices their own way), matched to the mesh's by position.
+ */
+function readVertexMap(method: Method, skeletonFile: string, positions: ArrayLike<number>): ArrayLike<number> {
+  const file = method === 'cscd' ? skeletonFile : skeletonFile.replace(/\.[^./\\]+$/, '.map.json');
+  if (!existsSync(file)) throw new VertexMapError(`no vertex map (${path.basename(file)})`);
+  const map = JSON.parse(readFileSync(file, 'utf8')) as { vertexToNode?: number[]; positions?: number[] };
+  if (!Array.isArray(map.vertexToNode)) throw new VertexMapError(`${path.basename(file)} has no vertexToNode`);
+  return map.positions ? mapByPosition(positions, map.positions, map.vertexToNode) : map.vertexToNode;
+}
+
 function describe(error: unknown): string {
-  const text = error instanceof Error ? (error instanceof CoreError || error instanceof BenchError ? error.message : `${error.name}: ${error.message}`) : String(error);
+  const text = error instanceof Error ? (error instanceof CoreError || error instanceof BenchError || error instanceof VertexMapError ? error.message : `${error.name}: ${error.message}`) : String(error);
   return text.split('\n')[0];
 }
 
@@ -205,8 +243,44 @@ interface Row {
   genus: number | null;
   method: Method;
   run: Run;
+  /** Radii derived from the mesh (rule 1). */
   score: Score | null;
+  /** Radii from the method's vertex map (rule 2). */
+  mapScore: MapScore | null;
+  /** How many tips the mesh's ground truth has (null: it has none). */
+  tipCount: number | null;
+  tips: TipGap | null;
 }
+
+/** The two radius rules every skeleton is scored by, as the summary names them. */
+const RULES = { derived: 'radii derived from the mesh', map: 'radii from the vertex map' } as const;
+type Rule = keyof typeof RULES;
+
+function errorOf(row: Row | undefined, rule: Rule): number | null {
+  const score = rule === 'derived' ? row?.score : row?.mapScore;
+  return score?.ok ? score.evaluation.reconError : null;
+}
+
+/** cscd's error and another method's on one mesh under one rule, or null when either was not scored. */
+function errorPair(rows: Row[], mesh: string, other: Method, rule: Rule): [number, number] | null {
+  const [a, b] = [errorOf(rows.find((r) => r.mesh === mesh && r.method === 'cscd'), rule), errorOf(rows.find((r) => r.mesh === mesh && r.method === other), rule)];
+  return a !== null && b !== null ? [a, b] : null;
+}
+
+function errorRatio(rows: Row[], mesh: string, other: Method, rule: Rule): number | null {
+  const pair = errorPair(rows, mesh, other, rule);
+  return pair && pair[0] / pair[1];
+}
+
+/** cscd against another method under one rule, over the meshes where both were scored. */
+function comparison(rows: Row[], other: Method, rule: Rule): Comparison {
+  return compareErrors([...new Set(rows.map((r) => r.mesh))].flatMap((mesh) => {
+    const pair = errorPair(rows, mesh, other, rule);
+    return pair ? [pair] : [];
+  }));
+}
+
+const percent = (fraction: number) => `${(100 * fraction).toFixed(2)}`;
 
 const num = (x: number) => String(Number(x.toPrecision(3)));
 const cell = (text: string) => text.replace(/\|/g, '\\|');
@@ -236,6 +310,54 @@ function pageLongTasks(): string | null {
     + `from ${r.renderer}); ${r.count} tasks over 50 ms.`;
 }
 
+/** The summary against the baselines and the issue's targets ("Skeletons that beat MSLS"), each with met / not met. */
+function summary(rows: Row[], config: Config): string[] {
+  if (!config.methods.includes('cscd')) return [];
+  const others = config.methods.filter((m) => m !== 'cscd');
+  const lines: string[] = [];
+  if (others.length) {
+    lines.push('', 'cscd against each baseline, per radius rule, over the meshes where both were scored: on how many meshes cscd\'s error '
+      + 'is below the other\'s, and the geometric mean of cscd\'s error over the other\'s (below 1: cscd reconstructs the shape better).', '',
+    '| against | radius rule | cscd below | geometric mean of cscd / other error |', '| --- | --- | ---: | ---: |');
+    for (const other of others) {
+      for (const rule of Object.keys(RULES) as Rule[]) {
+        const c = comparison(rows, other, rule);
+        lines.push(`| ${other} | ${RULES[rule]} | ${c.meshes ? `${c.below} of ${c.meshes} (${Math.round((100 * c.below) / c.meshes)}%)` : ''} `
+          + `| ${c.geomean === null ? '' : c.geomean.toFixed(2)} |`);
+      }
+    }
+  }
+
+  const verdict = (met: boolean | null) => (met === null ? 'not measured' : met ? '**met**' : '**not met**');
+  const targets: string[] = [];
+  if (config.methods.includes('msls')) {
+    const [derived, map] = [comparison(rows, 'msls', 'derived'), comparison(rows, 'msls', 'map')];
+    const share = derived.meshes ? derived.below / derived.meshes : null;
+    targets.push(
+      `- cscd below msls on ≥ 80% of the meshes (${RULES.derived}): ${share === null ? 'n/a' : `${derived.below} of ${derived.meshes} (${Math.round(100 * share)}%)`}: ${verdict(share === null ? null : share >= 0.8)}`,
+      `- geometric mean of cscd / msls error ≤ 0.8 (${RULES.derived}): ${derived.geomean?.toFixed(2) ?? 'n/a'}: ${verdict(derived.geomean === null ? null : derived.geomean <= 0.8)}`,
+      `- geometric mean of cscd / msls error ≤ 1.0 (${RULES.map}): ${map.geomean?.toFixed(2) ?? 'n/a'}: ${verdict(map.geomean === null ? null : map.geomean <= 1)}`,
+    );
+  }
+  const shapes = rows.filter((r) => r.method === 'cscd' && r.tipCount !== null);
+  if (shapes.length) {
+    const msls = (mesh: string) => rows.find((r) => r.mesh === mesh && r.method === 'msls')?.tips ?? null;
+    const gaps = shapes.map((r) => `${r.mesh} ${r.tips ? `${percent(r.tips.mean)}%` : 'no skeleton'}`).join(', ');
+    targets.push(`- mean tip gap ≤ 0.5% of the diagonal on each synthetic shape: ${gaps}: ${verdict(shapes.every((r) => r.tips !== null && r.tips.mean <= 0.005))}`);
+    if (config.methods.includes('msls')) {
+      const compared = shapes.filter((r) => msls(r.mesh) !== null);
+      const against = compared.map((r) => `${r.mesh} ${r.tips ? percent(r.tips.mean) : '–'} vs ${percent((msls(r.mesh) as TipGap).mean)}`).join(', ');
+      targets.push(`- mean tip gap no worse than msls's on each synthetic shape (cscd vs msls, %): ${against || 'no msls skeleton'}`
+        + `${compared.length < shapes.length ? ` (${shapes.length - compared.length} shapes without an msls skeleton)` : ''}: `
+        + `${verdict(compared.length ? compared.every((r) => r.tips !== null && r.tips.mean <= (msls(r.mesh) as TipGap).mean) : null)}`);
+    }
+    const leaves = shapes.map((r) => `${r.mesh} ${r.tips ? r.tips.ownLeaves : 0} / ${r.tipCount}`).join(', ');
+    targets.push(`- every ground-truth tip has a leaf of its own: ${leaves}: ${verdict(shapes.every((r) => r.tips !== null && r.tips.ownLeaves === r.tipCount))}`);
+  }
+  if (targets.length) lines.push('', 'Targets of the issue "Skeletons that beat MSLS", on the meshes of this run:', '', ...targets);
+  return lines;
+}
+
 function markdown(rows: Row[], config: Config, machine: string, meshesDone: number): string {
   const page = pageLongTasks();
   const withRatio = config.methods.includes('cscd') && config.methods.includes('msls');
@@ -252,16 +374,20 @@ function markdown(rows: Row[], config: Config, machine: string, meshesDone: numb
     `Every method ran in its own process pinned to one core (\`taskset -c ${config.cpu}\`, \`OMP_NUM_THREADS=1\` and the like), `
       + 'the methods one after the other for each mesh in the order cscd, ls, msls, mcf, so that drift of the machine affects them alike. '
       + 'Seconds: wall time of the skeletonisation alone, as each runner measures it (cscd: `openSurface` + `skeleton`; ls/msls: '
-      + '`graph.from_mesh` + `LS_skeleton`/`MSLS_skeleton`; mcf: `extract_mean_curvature_flow_skeleton`), reading and writing files excluded. '
-      + 'Every skeleton was read back with `parseSkeleton` and scored by the same `core.evaluate` with **radii: null for every method**, '
-      + 'so the radii of the reconstruction are derived from the mesh by one rule for all (CSCD\'s own radii are not used). '
+      + '`graph.from_mesh` + `LS_skeleton_and_map`/`MSLS_skeleton_and_map`; mcf: `extract_mean_curvature_flow_skeleton`), reading and writing files excluded. '
+      + 'Every skeleton was read back with `parseSkeleton` and scored by the same `core.evaluate` twice, by two radius rules the same for every method '
+      + '(CSCD\'s own radii are not used): **radii: null**, derived from the mesh by one tube-fitting rule; and **vertex map**, a node\'s radius '
+      + 'the median distance from it to the mesh vertices the method\'s vertex map gives it (nodes that own none: their neighbours\' mean). '
       + 'Error: the reconstruction error in the paper\'s unit (squared distance from the mesh vertices to the reconstructed surface, '
-      + 'mesh scaled to unit bounding-box diagonal, ×1e3), mean, median and 95th percentile over the vertices. '
+      + 'mesh scaled to unit bounding-box diagonal, ×1e3), mean, median and 95th percentile over the vertices; the vertex-map error is the mean. '
+      + 'Tip gap (meshes with a ground truth `<stem>__GT.json`): per ground-truth tip, the distance to the skeleton\'s polyline in % of the '
+      + 'bounding-box diagonal, mean / max; tips with own leaf: tips with a skeleton leaf of their own within 1% of the diagonal. '
       + 'Cycles: independent cycles of the skeleton graph, against the genus of the mesh (`core.inspect`). '
       + (withRatio ? 'cscd / msls: cscd\'s seconds over msls\'s on the same mesh (below 1: cscd is faster).' : ''),
     '',
-    `| mesh | V | method | seconds | nodes | cycles / genus | error ×1e3 | median ×1e3 | p95 ×1e3 |${withRatio ? ' cscd / msls |' : ''}`,
-    `| --- | ---: | --- | ---: | ---: | :---: | ---: | ---: | ---: |${withRatio ? ' ---: |' : ''}`,
+    `| mesh | V | method | seconds | nodes | cycles / genus | error ×1e3 | median ×1e3 | p95 ×1e3 | error ×1e3, vertex map `
+      + `| tip gap % (mean / max) | tips with own leaf |${withRatio ? ' cscd / msls |' : ''}`,
+    `| --- | ---: | --- | ---: | ---: | :---: | ---: | ---: | ---: | ---: | ---: | ---: |${withRatio ? ' ---: |' : ''}`,
   ];
   for (const row of rows) {
     const genus = row.genus === null ? 'n/a' : String(row.genus);
@@ -275,40 +401,53 @@ function markdown(rows: Row[], config: Config, machine: string, meshesDone: numb
       nodes = row.score.nodes === null ? '' : String(row.score.nodes);
       error = `scoring failed: ${row.score.reason}`;
     }
+    const mapError = row.mapScore === null ? '' : row.mapScore.ok ? num(row.mapScore.evaluation.reconError) : `n/a (${row.mapScore.reason})`;
+    const gap = row.tips ? `${percent(row.tips.mean)} / ${percent(row.tips.max)}` : '';
+    const own = row.tips ? `${row.tips.ownLeaves} / ${row.tipCount}` : '';
     const r = row.method === 'cscd' ? ratio(rows, row.mesh) : null;
     lines.push(`| ${cell(row.mesh)} | ${row.vertices ?? ''} | ${row.method} | ${cell(runCell(row.run, config.timeout))} | ${nodes} | ${cycles} `
-      + `| ${cell(error)} | ${med} | ${p95} |${withRatio ? ` ${r === null ? '' : r.toFixed(2)} |` : ''}`);
+      + `| ${cell(error)} | ${med} | ${p95} | ${cell(mapError)} | ${gap} | ${own} |${withRatio ? ` ${r === null ? '' : r.toFixed(2)} |` : ''}`);
   }
 
-  lines.push('', 'Per method: meshes with a skeleton, timeouts and failures; median seconds and median error over the meshes it finished; '
+  lines.push('', 'Per method: meshes with a skeleton, timeouts and failures; median seconds and median error (both rules) over the meshes it finished; '
     + 'meshes where cycles = genus.', '',
-  '| method | done | timeout | failed | median seconds | median error ×1e3 | cycles = genus |',
-  '| --- | ---: | ---: | ---: | ---: | ---: | ---: |');
+  '| method | done | timeout | failed | median seconds | median error ×1e3 | median error ×1e3, vertex map | cycles = genus |',
+  '| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |');
   for (const method of config.methods) {
     const mine = rows.filter((r) => r.method === method);
     const scored = mine.flatMap((r) => (r.score?.ok ? [{ row: r, e: r.score.evaluation }] : []));
     const medSeconds = median(mine.flatMap((r) => (r.run.seconds === null ? [] : [r.run.seconds])));
     const medError = median(scored.map((s) => s.e.reconError));
+    const medMapError = median(mine.flatMap((r) => errorOf(r, 'map') ?? []));
     lines.push(`| ${method} | ${mine.filter((r) => r.run.status === 'ok').length} | ${mine.filter((r) => r.run.status === 'timeout').length} `
       + `| ${mine.filter((r) => r.run.status === 'failed').length} | ${medSeconds === null ? '' : medSeconds.toFixed(2)} `
-      + `| ${medError === null ? '' : num(medError)} | ${scored.filter((s) => s.e.cycles === s.row.genus).length} of ${scored.length} |`);
+      + `| ${medError === null ? '' : num(medError)} | ${medMapError === null ? '' : num(medMapError)} | ${scored.filter((s) => s.e.cycles === s.row.genus).length} of ${scored.length} |`);
   }
   const ratios = [...new Set(rows.map((r) => r.mesh))].flatMap((mesh) => ratio(rows, mesh) ?? []);
   if (withRatio && ratios.length) {
     lines.push('', `cscd / msls time: median ${median(ratios)?.toFixed(2)} over ${ratios.length} meshes (from ${Math.min(...ratios).toFixed(2)} to ${Math.max(...ratios).toFixed(2)}).`);
   }
+  lines.push(...summary(rows, config));
   return `${lines.join('\n')}\n`;
 }
 
 function csv(rows: Row[]): string {
   const quote = (v: string | number | null) => (v === null ? '' : typeof v === 'number' ? String(v) : /[",\n]/.test(v) ? `"${v.replace(/"/g, '""')}"` : v);
-  const lines = ['mesh,vertices,genus,method,status,reason,seconds,nodes,cycles,recon_error,median,p95,cscd_over_msls'];
+  const lines = ['mesh,vertices,genus,method,status,reason,seconds,nodes,cycles,recon_error,median,p95,'
+    + 'map_recon_error,map_median,map_p95,map_reason,map_nodes_from_neighbours,map_nodes_from_fallback,map_unmapped_vertices,'
+    + 'tips,tip_gap_mean_pct,tip_gap_max_pct,tips_own_leaf,cscd_over_msls,cscd_over_msls_error,cscd_over_msls_map_error'];
   for (const row of rows) {
     const e = row.score?.ok ? row.score.evaluation : null;
+    const m = row.mapScore?.ok ? row.mapScore : null;
     const reason = row.run.reason || (row.score && !row.score.ok ? `scoring failed: ${row.score.reason}` : '');
+    const cscd = row.method === 'cscd';
     lines.push([row.mesh, row.vertices, row.genus, row.method, row.run.status, reason, row.run.seconds,
       e ? e.nodes : row.score && !row.score.ok ? row.score.nodes : null, e?.cycles ?? null, e?.reconError ?? null, e?.median ?? null, e?.p95 ?? null,
-      row.method === 'cscd' ? ratio(rows, row.mesh) : null].map(quote).join(','));
+      m?.evaluation.reconError ?? null, m?.evaluation.median ?? null, m?.evaluation.p95 ?? null, row.mapScore && !row.mapScore.ok ? row.mapScore.reason : null,
+      m?.fromNeighbours ?? null, m?.fromFallback ?? null, m?.unmapped ?? null,
+      row.tipCount, row.tips ? 100 * row.tips.mean : null, row.tips ? 100 * row.tips.max : null, row.tips?.ownLeaves ?? null,
+      cscd ? ratio(rows, row.mesh) : null, cscd ? errorRatio(rows, row.mesh, 'msls', 'derived') : null,
+      cscd ? errorRatio(rows, row.mesh, 'msls', 'map') : null].map(quote).join(','));
   }
   return `${lines.join('\n')}\n`;
 }
@@ -378,6 +517,11 @@ async function main(): Promise<void> {
   });
 
   let core = await loadCoreNode();
+  /** Why scoring failed, one line; a WASM trap (not an error about the input) may leave the module unusable: start a fresh one. */
+  const failure = async (error: unknown) => {
+    if (!(error instanceof CoreError || error instanceof SkeletonFormatError || error instanceof VertexMapError)) core = await loadCoreNode();
+    return describe(error);
+  };
   const rows: Row[] = [];
   for (let i = 0; i < config.meshes.length; i++) {
     const file = config.meshes[i];
@@ -386,11 +530,13 @@ async function main(): Promise<void> {
     let mesh: MeshArrays | null = null;
     let vertices: number | null = null;
     let genus: number | null = null;
+    let diagonal = NaN;
     let meshError = '';
+    const tips = groundTruthTips(file);
     try {
       mesh = parseMesh(readFileSync(file), file);
       const facts = core.inspect(mesh);
-      [vertices, genus] = [facts.vertices, facts.genus];
+      [vertices, genus, diagonal] = [facts.vertices, facts.genus, facts.bboxDiagonal];
     } catch (error) {
       meshError = `mesh unreadable: ${describe(error)}`;
     }
@@ -400,27 +546,41 @@ async function main(): Promise<void> {
     for (const method of config.methods) {
       const run = mesh ? runMethod(method, file, runDir, fileLabel, config.timeout, config.cpu) : { status: 'failed' as const, seconds: null, reason: meshError, file: '' };
       process.stdout.write(`  ${method.padEnd(5)} ${runCell(run, config.timeout)}${run.status === 'ok' ? ' s' : ''}\n`);
-      mine.push({ mesh: label, vertices, genus, method, run, score: null });
+      mine.push({ mesh: label, vertices, genus, method, run, score: null, mapScore: null, tipCount: tips?.length ?? null, tips: null });
     }
 
     for (const row of mine) {
       if (row.run.status !== 'ok' || !mesh) continue;
       const started = performance.now();
-      let nodes: number | null = null;
+      let skeleton: ParsedSkeleton | null = null;
+      let derivedRadii: Float64Array | null = null;
       try {
-        const skeleton = parseSkeleton(readFileSync(row.run.file), row.run.file);
-        nodes = skeleton.nodes.length / 3;
-        // radii: null for every method: one rule derives them from the mesh, whatever the method reports.
-        const { reconError, median, p95, nodes: count, cycles } = core.evaluate(mesh, { nodes: skeleton.nodes, edges: skeleton.edges, radii: null });
-        row.score = { ok: true, evaluation: { reconError, median, p95, nodes: count, cycles } };
+        skeleton = parseSkeleton(readFileSync(row.run.file), row.run.file);
+        // Rule 1, radii: null for every method: one rule derives them from the mesh, whatever the method reports.
+        const evaluation = core.evaluate(mesh, { nodes: skeleton.nodes, edges: skeleton.edges, radii: null });
+        derivedRadii = evaluation.radii;
+        row.score = { ok: true, evaluation: figures(evaluation) };
       } catch (error) {
-        row.score = { ok: false, reason: describe(error), nodes };
-        // A WASM trap (not an error about the input) may leave the module unusable: start a fresh one.
-        if (!(error instanceof CoreError || error instanceof SkeletonFormatError)) core = await loadCoreNode();
+        row.score = { ok: false, reason: await failure(error), nodes: skeleton ? skeleton.nodes.length / 3 : null };
+      }
+      if (skeleton) {
+        row.tips = tips ? tipGap(tips, skeleton, diagonal) : null;
+        try {
+          // Rule 2: radii from the method's own vertex map; nodes of components that own no vertex keep rule 1's radius.
+          const map = readVertexMap(row.method, row.run.file, mesh.positions);
+          const { radii, fromNeighbours, fromFallback } = vertexMapRadii(mesh.positions, skeleton, map, derivedRadii);
+          const evaluation = core.evaluate(mesh, { nodes: skeleton.nodes, edges: skeleton.edges, radii });
+          const unmapped = Array.prototype.filter.call(map, (n: number) => n === -1).length;
+          row.mapScore = { ok: true, evaluation: figures(evaluation), fromNeighbours, fromFallback, unmapped };
+        } catch (error) {
+          row.mapScore = { ok: false, reason: await failure(error) };
+        }
       }
       const took = ((performance.now() - started) / 1000).toFixed(1);
+      const mapText = row.mapScore === null ? '' : `; vertex map: ${row.mapScore.ok ? `error ${num(row.mapScore.evaluation.reconError)}` : `n/a (${row.mapScore.reason})`}`;
+      const tipText = row.tips ? `; tip gap ${percent(row.tips.mean)}% / ${percent(row.tips.max)}%, own leaves ${row.tips.ownLeaves} / ${row.tipCount}` : '';
       process.stdout.write(`  scored ${row.method.padEnd(5)} ${row.score.ok ? `error ${num(row.score.evaluation.reconError)}, ${row.score.evaluation.nodes} nodes, `
-        + `${row.score.evaluation.cycles} cycles` : `failed: ${row.score.reason}`} (${took} s)\n`);
+        + `${row.score.evaluation.cycles} cycles` : `failed: ${row.score.reason}`}${mapText}${tipText} (${took} s)\n`);
     }
     rows.push(...mine);
 

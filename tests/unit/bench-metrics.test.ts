@@ -74,6 +74,11 @@ describe('vertex-map radii', () => {
     expect(() => vertexMapRadii(positions, polyline, [0, 0, 0], fallback)).toThrow(new VertexMapError('map has 3 entries for 4 vertices'));
     expect(() => vertexMapRadii(positions, polyline, [0, 0, 0, 5], fallback)).toThrow(VertexMapError);
   });
+  it('needs the fallback only for components that own no vertex', () => {
+    const connected = { nodes: polyline.nodes.slice(0, 12), edges: polyline.edges };
+    expect(Array.from(vertexMapRadii(positions, connected, [0, 0, 0, 2], null).radii)).toEqual([2, 2.5, 3, 3]);
+    expect(() => vertexMapRadii(positions, polyline, [0, 0, 0, 2], null)).toThrow(new VertexMapError('1 nodes in components that own no vertex, and no other radius for them'));
+  });
   it('carries a map in another vertex order over by position', () => {
     // The tool has the mesh's vertices 2, 0, 1 (vertex 3 missing) and merged nothing.
     const tool = [0, -4, 0, 0, 1, 0, 0, 0, 2];

@@ -4,9 +4,11 @@
 //   npm run bench [-- [--quick] [--methods cscd,ls,msls,mcf] [--meshes a,b] [--timeout S] [--cpu N] [--no-build] [folder...]]
 //
 // Meshes: every ../shared/data/meshes/*.ply and ../shared/data/synthetic/*.ply (the quick subset with
-// --quick), plus every .ply/.obj/.off of the folders given; --meshes keeps only the named ones (with or without extension). For each mesh,
-// the methods run one after the other in a fixed order, each in its own process pinned to one core;
-// then each skeleton is read back and scored by core.evaluate. The table, a CSV and an SVG go to
+// --quick), plus every .ply/.obj/.off of the folders given; --meshes keeps only the named ones (with or
+// without extension). For each mesh, the methods run one after the other in a fixed order, each in its
+// own process pinned to one core; then each skeleton is read back and scored by core.evaluate under two
+// radius rules (derived from the mesh; from the method's vertex map), and, where the mesh has a ground
+// truth `<stem>__GT.json`, by its tip gap (bench/metrics.ts). The table, a CSV and an SVG go to
 // bench/results/<date>[-quick][-N].{md,csv,svg} (rewritten after every mesh, so an interrupted run
 // keeps what it did); skeletons and logs to .deps/bench/runs/<same name>/.
 import { execFileSync, spawnSync } from 'node:child_process';

@@ -61,9 +61,9 @@ def main() -> int:
                 if n < m:
                     out.write(f"l {index[n] + 1} {index[m] + 1}\n")
 
-    # The map indexes the nodes of the edge graph, i.e. GEL's vertices, which GEL numbers its own way
-    # (it builds the mesh face by face and stitches coincident corners): the positions it indexes go with
-    # it, so that the bench can match them to the file's vertices.
+    # The map indexes the nodes of the edge graph, i.e. the vertices of GEL's mesh, which GEL numbers its
+    # own way (not the file's order): the positions it indexes go with it, so that the bench can match
+    # them to the file's vertices.
     with open(os.path.splitext(out_path)[0] + ".map.json", "w") as out:
         json.dump({
             "vertexToNode": [index.get(int(k), -1) for k in node_of],

@@ -48,15 +48,13 @@ void cliquesToStars(SkeletonGraph& graph, const std::set<std::array<size_t, 3>>&
   for (const auto& [g, nodes] : members) {
     for (const auto& e : groupEdges[g]) edgeSet.erase(e);
     Vector3 center{0, 0, 0};
-    double radius = 0, weight = 0;
+    double weight = 0;
     for (size_t v : nodes) {
       center += graph.weights[v] * graph.nodes[v];
-      radius += graph.weights[v] * graph.radii[v];
       weight += graph.weights[v];
     }
     const size_t hub = graph.nodes.size();
     graph.nodes.push_back(weight > 0 ? center / weight : graph.nodes[*nodes.begin()]);
-    graph.radii.push_back(weight > 0 ? radius / weight : graph.radii[*nodes.begin()]);
     graph.weights.push_back(0); // a branch node owns no surface of its own
     for (size_t v : nodes) edgeSet.insert({v, hub});
   }

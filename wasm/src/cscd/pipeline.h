@@ -9,14 +9,19 @@
 //   double resolution()                         mean sample spacing (edge length)
 //   std::vector<std::vector<size_t>> overlaps(const std::vector<size_t>& candidates)
 //   Regions regions(const std::vector<size_t>& packed)
-//   void centre(SkeletonGraph& graph, const std::vector<size_t>& packed)   node positions and radii fitted to the shape
+//   void centre(SkeletonGraph& graph, const std::vector<size_t>& packed)   region and branch node positions
+//   const Samples& samples()                    the shape's elements, their areas and neighbours
+//   bool inside(const Vector3& p)               whether p lies inside the shape (for closed separators)
+//   void fitRadii(SkeletonGraph& graph)         node radii fitted to the shape around the final skeleton
 
+#include "cscd/bands.h"
 #include "cscd/graph.h"
 #include "cscd/options.h"
 #include "cscd/pack.h"
 #include "cscd/regions.h"
 
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,6 +64,15 @@ constexpr size_t kMaxAutoSources = 400;
 constexpr size_t kAutoWindow = 20;
 constexpr double kAutoCovered = 0.99;
 constexpr double kAutoMinGain = 0.005;
+
+// Bands are one separator radius wide (bands.h): nodes about a radius apart along a tube, as dense as
+// the shape can show (a thinner slice has no new cross-section to tell) and each node's vertices
+// within about a radius of it.
+constexpr double kBandWidth = 1.0;
+
+// The radius of the tube a separator goes around: a loop is its circumference; a path across a sheet
+// is half the circumference of the flattened tube the sheet is.
+inline double separatorRadius(const Candidate& c) { return c.length / (c.closed ? 2 * M_PI : M_PI); }
 
 template <class Realization>
 class Pipeline {
@@ -112,7 +126,6 @@ public:
     lap("pack");
 
     Regions regions = realization.regions(skeleton.packed);
-    skeleton.vertexToNode = regions.label;
     lap("regions");
 
     SkeletonGraph& graph = skeleton.graph;
@@ -122,6 +135,18 @@ public:
     cliquesToStars(graph, regions.junctions);
     realization.centre(graph, skeleton.packed);
     lap("graph");
+
+    std::vector<double> width(regions.count, 0);
+    std::vector<char> solid(regions.count, 0);
+    for (size_t r = 0; r < skeleton.packed.size(); r++) {
+      const Candidate& c = candidates[skeleton.packed[r]];
+      width[r] = kBandWidth * separatorRadius(c);
+      solid[r] = c.closed;
+    }
+    skeleton.vertexToNode = refineIntoBands(graph, regions, realization.samples(), width, solid,
+                                            [&](const geometrycentral::Vector3& p) { return realization.inside(p); });
+    realization.fitRadii(graph);
+    lap("bands");
 
     skeleton.candidates = std::move(candidates);
     candidates.clear();

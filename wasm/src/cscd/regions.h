@@ -13,7 +13,8 @@ namespace cscd {
 // belongs to its geodesically nearest separator; parts of the shape no separator reaches become one
 // region each.
 struct Regions {
-  std::vector<uint32_t> label; // per element: regions 0..separators-1 are the separators', then the rest
+  std::vector<uint32_t> label;    // per element: regions 0..separators-1 are the separators', then the rest
+  std::vector<double> distance;   // per element: to the nearest separator (+infinity where none reaches)
   size_t count = 0;
   std::vector<geometrycentral::Vector3> centroid; // area-weighted
   std::vector<double> area;

@@ -63,8 +63,22 @@ geometrycentral::Vector3 MeshRealization::separatorNormal(size_t candidate) cons
   return pathNormal(loops[candidate], surfaceNormal);
 }
 
+bool MeshRealization::inside(const geometrycentral::Vector3& p) const { return windingNumber(surface.geometry(), p) > 0.5; }
+
+const Samples& MeshRealization::samples() {
+  if (!vertexSamples.positions.empty()) return vertexSamples;
+  auto& geometry = surface.geometry();
+  geometry.requireVertexDualAreas();
+  for (size_t v = 0; v < surface.vertexCount(); v++) {
+    vertexSamples.positions.push_back(geometry.vertexPositions[v]);
+    vertexSamples.weights.push_back(geometry.vertexDualAreas[v]);
+  }
+  for (auto e : surface.mesh().edges())
+    vertexSamples.edges.push_back({uint32_t(e.firstVertex().getIndex()), uint32_t(e.secondVertex().getIndex())});
+  return vertexSamples;
+}
+
 void MeshRealization::centre(SkeletonGraph& graph, const std::vector<size_t>& packed) const {
-  auto inside = [&](const geometrycentral::Vector3& p) { return windingNumber(surface.geometry(), p) > 0.5; };
   for (size_t node = 0; node < packed.size(); node++) {
     const size_t c = packed[node];
     geometrycentral::Vector3 centroid = loopCentroid(loops[c], closed[c]), n = separatorNormal(c);
@@ -83,9 +97,9 @@ void MeshRealization::centre(SkeletonGraph& graph, const std::vector<size_t>& pa
     }
     if (heaviest != SIZE_MAX && !nextToPath && !inside(graph.nodes[node])) graph.nodes[node] = graph.nodes[heaviest];
   }
+}
 
-  // Radii fitted to the surface around the final skeleton (the same rule as for other tools'
-  // skeletons): the mean distance to a whole region overestimates a long region's tube.
+void MeshRealization::fitRadii(SkeletonGraph& graph) const {
   TriangleMesh mesh;
   const auto& geometry = surface.geometry();
   for (size_t v = 0; v < surface.vertexCount(); v++) mesh.vertices.push_back(geometry.vertexPositions[v]);

@@ -25,11 +25,16 @@ public:
   // outer side has more area and drags the region centroid outwards (by r^2 / 2R on a torus), while
   // the centroid of a loop around the tube stays on its axis. A node that still falls outside the
   // shape moves to the loop centroid, which is inside (loops with an outside centroid were pruned); a
-  // branch node outside moves to its heaviest neighbour's position. Radii are then fitted to the
-  // surface around the final skeleton (tubeRadii). A path across a sheet (open separator) has no inside:
-  // its node keeps the region centroid along the path's normal and the path centroid across it, and
-  // so do junctions next to such paths.
+  // branch node outside moves to its heaviest neighbour's position.
+  // A path across a sheet (open separator) has no inside: its node keeps the region centroid along the
+  // path's normal and the path centroid across it, and so do junctions next to such paths.
   void centre(SkeletonGraph& graph, const std::vector<size_t>& packed) const;
+  // The vertices, their dual areas and the mesh edges.
+  const Samples& samples();
+  bool inside(const geometrycentral::Vector3& p) const;
+  // Radii fitted to the surface around the final skeleton (tubeRadii), the same rule as for other tools'
+  // skeletons: the mean distance to a whole region overestimates a long region's tube.
+  void fitRadii(SkeletonGraph& graph) const;
 
   // The loop of a candidate as the last stage-1 call produced it (for progressive display).
   const std::vector<geometrycentral::Vector3>& loop(size_t candidate) const { return loops[candidate]; }
@@ -46,6 +51,7 @@ private:
   std::vector<std::vector<geometrycentral::Vector3>> loops;
   std::vector<std::vector<geometrycentral::surface::SurfacePoint>> loopPoints;
   std::vector<char> closed;
+  Samples vertexSamples;
 };
 
 using MeshPipeline = Pipeline<MeshRealization>;

@@ -20,7 +20,8 @@ Regions assignRegions(Surface& surface, const std::vector<std::vector<SurfacePoi
   Regions regions;
   regions.label.assign(nV, kNone);
 
-  std::vector<double> distance(nV, INFINITY);
+  std::vector<double>& distance = regions.distance;
+  distance.assign(nV, INFINITY);
   std::vector<SurfacePoint> all;
   for (const auto& loop : loops) all.insert(all.end(), loop.begin(), loop.end());
   if (!all.empty()) distance = surface.geodesics().fromPoints(all);

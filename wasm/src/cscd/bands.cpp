@@ -1,0 +1,411 @@
+#include "cscd/bands.h"
+
+#include "cscd/union_find.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <set>
+
+using geometrycentral::Vector3;
+
+namespace cscd {
+namespace {
+
+constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+// A leaf branch is a bump unless some part of it lies farther from its junction's node than this many
+// junction radii: one radius to the junction's surface, one more beyond it.
+constexpr double kBranchReach = 2.0;
+// A leaf's node moves to its tip only when that is worth a tenth of its radius.
+constexpr double kTipMove = 0.1;
+// A loop is 2 pi band widths long (kBandWidth = 1): a region with less area than that many band widths
+// times the element spacing does not hold a strip of elements along its loop.
+constexpr double kIslandStrip = M_PI;
+
+// A connected piece of one band of one region.
+struct Piece {
+  uint32_t region = 0;
+  int64_t level = 0;
+  uint32_t deepest = kNone; // its element farthest from the separators
+  uint32_t nearest = kNone; // ... and nearest to them
+  std::vector<uint32_t> elements;
+};
+
+struct Pieces {
+  std::vector<uint32_t> of; // per element
+  std::vector<Piece> list;
+  std::map<std::array<uint32_t, 2>, uint32_t> contacts; // sorted piece pairs -> element edges between them
+};
+
+Pieces collectPieces(UnionFind& sets, const Regions& regions, const std::vector<int64_t>& level, const Samples& samples) {
+  const size_t count = samples.positions.size();
+  const std::vector<double>& distance = regions.distance;
+  Pieces pieces;
+  pieces.of.assign(count, kNone);
+  std::vector<uint32_t> pieceOfRoot(count, kNone);
+  for (uint32_t v = 0; v < count; v++) {
+    uint32_t& p = pieceOfRoot[sets.find(v)];
+    if (p == kNone) {
+      p = uint32_t(pieces.list.size());
+      pieces.list.push_back({regions.label[v], level[v], v, v, {}});
+    }
+    pieces.of[v] = p;
+    Piece& piece = pieces.list[p];
+    piece.elements.push_back(v);
+    if (distance[v] > distance[piece.deepest]) piece.deepest = v;
+    if (distance[v] < distance[piece.nearest]) piece.nearest = v;
+  }
+  for (const auto& [a, b] : samples.edges) {
+    uint32_t pa = pieces.of[a], pb = pieces.of[b];
+    if (pa != pb) pieces.contacts[{std::min(pa, pb), std::max(pa, pb)}]++;
+  }
+  return pieces;
+}
+
+struct Slice {
+  Vector3 centroid;
+  double radius = 0; // mean distance of the slice's elements to its centroid
+};
+
+// The weighted centroid of the elements of `piece` whose distance lies in [low, high] (all of them if
+// none does), and their mean distance to it.
+Slice slice(const Piece& piece, const Samples& samples, const std::vector<double>& distance, double low, double high) {
+  auto centroidOf = [&](bool all) {
+    Vector3 sum{0, 0, 0};
+    double weight = 0;
+    for (uint32_t v : piece.elements)
+      if (all || (distance[v] >= low && distance[v] <= high)) {
+        sum += samples.weights[v] * samples.positions[v];
+        weight += samples.weights[v];
+      }
+    return std::make_pair(weight > 0 ? sum / weight : samples.positions[piece.elements[0]], weight);
+  };
+  auto [centroid, weight] = centroidOf(false);
+  const bool all = weight == 0;
+  if (all) centroid = centroidOf(true).first;
+  double spread = 0, total = 0;
+  for (uint32_t v : piece.elements)
+    if (all || (distance[v] >= low && distance[v] <= high)) {
+      spread += samples.weights[v] * norm(samples.positions[v] - centroid);
+      total += samples.weights[v];
+    }
+  return {centroid, total > 0 ? spread / total : 0};
+}
+
+} // namespace
+
+std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regions, const Samples& samples,
+                                      const std::vector<double>& width, const std::vector<char>& solid,
+                                      const std::function<bool(const Vector3&)>& inside) {
+  const size_t count = samples.positions.size();
+  const std::vector<double>& distance = regions.distance;
+  const std::vector<uint32_t>& label = regions.label;
+
+  std::vector<int64_t> level(count, 0);
+  for (size_t v = 0; v < count; v++) {
+    const double w = width[label[v]];
+    if (w > 0 && std::isfinite(distance[v])) level[v] = int64_t(std::floor(distance[v] / w));
+  }
+  UnionFind sets(count);
+  for (const auto& [a, b] : samples.edges)
+    if (label[a] == label[b] && level[a] == level[b]) sets.unite(a, b);
+  Pieces pieces = collectPieces(sets, regions, level, samples);
+
+  // Pieces of one band that touch the same piece below and the same piece above went around something
+  // (a bump, a smaller region) and are one cross-section: joined, they keep the region's graph a tree.
+  {
+    std::map<std::array<uint64_t, 3>, uint32_t> firstAround;
+    std::vector<std::vector<uint32_t>> below(pieces.list.size()), above(pieces.list.size());
+    for (const auto& [pair, n] : pieces.contacts) {
+      const Piece &a = pieces.list[pair[0]], &b = pieces.list[pair[1]];
+      if (a.region != b.region) continue;
+      (a.level < b.level ? above : below)[pair[0]].push_back(pair[1]);
+      (b.level < a.level ? above : below)[pair[1]].push_back(pair[0]);
+    }
+    bool joined = false;
+    for (uint32_t p = 0; p < pieces.list.size(); p++)
+      for (uint32_t low : below[p])
+        for (uint32_t high : above[p]) {
+          auto [it, fresh] = firstAround.emplace(std::array<uint64_t, 3>{uint64_t(pieces.list[p].level), low, high}, p);
+          if (!fresh) {
+            sets.unite(pieces.list[p].elements[0], pieces.list[it->second].elements[0]);
+            joined = true;
+          }
+        }
+    if (joined) pieces = collectPieces(sets, regions, level, samples);
+  }
+  const size_t pieceCount = pieces.list.size();
+  double spacing = 0;
+  for (const auto& [a, b] : samples.edges) spacing += norm(samples.positions[a] - samples.positions[b]);
+  spacing /= std::max<size_t>(1, samples.edges.size());
+
+  // Node of every piece: a region's piece nearest its separator is the region's node, the others new.
+  std::vector<uint32_t> mainPiece(regions.count, kNone);
+  for (uint32_t p = 0; p < pieceCount; p++) {
+    uint32_t& m = mainPiece[pieces.list[p].region];
+    if (m == kNone || distance[pieces.list[p].nearest] < distance[pieces.list[m].nearest]) m = p;
+  }
+  const size_t oldNodes = graph.nodes.size();
+  std::vector<uint32_t> nodeOf(pieceCount);
+  std::vector<std::vector<uint32_t>> piecesOf(oldNodes);
+  for (uint32_t p = 0; p < pieceCount; p++) {
+    const uint32_t region = pieces.list[p].region;
+    nodeOf[p] = mainPiece[region] == p ? region : uint32_t(piecesOf.size());
+    if (nodeOf[p] == piecesOf.size()) piecesOf.emplace_back();
+    piecesOf[nodeOf[p]].push_back(p);
+  }
+  const size_t nodeCount = piecesOf.size();
+
+  // Positions and radii: region and branch nodes as the realization placed them, band pieces at the
+  // centroid of their middle slice.
+  std::vector<Vector3> position(nodeCount);
+  std::vector<double> radius(nodeCount, 0);
+  for (size_t node = 0; node < oldNodes; node++) position[node] = graph.nodes[node];
+  for (uint32_t p = 0; p < pieceCount; p++) {
+    const Piece& piece = pieces.list[p];
+    const double low = distance[piece.nearest], high = distance[piece.deepest];
+    const double middle = (low + high) / 2, half = std::max(width[piece.region], high - low) / 4;
+    const Slice middleSlice = slice(piece, samples, distance, middle - half, middle + half);
+    const uint32_t node = nodeOf[p];
+    radius[node] = middleSlice.radius;
+    if (node < oldNodes) continue;
+    position[node] = middleSlice.centroid;
+    if (solid[piece.region] && !inside(position[node])) {
+      Vector3 whole = slice(piece, samples, distance, INFINITY, -INFINITY).centroid;
+      if (inside(whole)) position[node] = whole;
+    }
+  }
+
+  // Edges: inside each region a spanning tree of the contacts between its pieces (most contact first);
+  // every edge of the region graph joins the two pieces with most contact across it.
+  std::set<std::array<uint32_t, 2>> edges;
+  auto addEdge = [&](uint32_t a, uint32_t b) {
+    if (a != b) edges.insert({std::min(a, b), std::max(a, b)});
+  };
+  {
+    std::vector<std::pair<uint32_t, std::array<uint32_t, 2>>> inner;
+    for (const auto& [pair, n] : pieces.contacts)
+      if (pieces.list[pair[0]].region == pieces.list[pair[1]].region) inner.push_back({n, pair});
+    std::stable_sort(inner.begin(), inner.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    UnionFind tree(pieceCount);
+    for (const auto& [n, pair] : inner)
+      if (tree.find(pair[0]) != tree.find(pair[1])) {
+        tree.unite(pair[0], pair[1]);
+        addEdge(nodeOf[pair[0]], nodeOf[pair[1]]);
+      }
+  }
+  std::vector<std::vector<size_t>> members(oldNodes); // of each branch node: the regions it joins
+  for (const auto& e : graph.edges)
+    for (int k = 0; k < 2; k++)
+      if (e[k] >= regions.count && e[1 - k] < regions.count) members[e[k]].push_back(e[1 - k]);
+  // The piece of `region` with the most element edges to a piece of a region that `accepts` takes.
+  auto touching = [&](size_t region, auto&& accepts) {
+    std::array<uint32_t, 2> best{mainPiece[region], kNone};
+    uint32_t most = 0;
+    for (const auto& [pair, n] : pieces.contacts)
+      for (int k = 0; k < 2; k++)
+        if (pieces.list[pair[k]].region == region && accepts(pieces.list[pair[1 - k]].region) && n > most) {
+          best = {pair[k], pair[1 - k]};
+          most = n;
+        }
+    return best;
+  };
+  for (const auto& e : graph.edges) {
+    const size_t a = std::min(e[0], e[1]), b = std::max(e[0], e[1]);
+    if (b < regions.count) {
+      auto [pa, pb] = touching(a, [&](size_t r) { return r == b; });
+      addEdge(nodeOf[pa], pb == kNone ? uint32_t(b) : nodeOf[pb]);
+    } else if (a < regions.count) {
+      const std::vector<size_t>& joined = members[b];
+      const uint32_t pa = touching(a, [&](size_t r) { return r != a && std::count(joined.begin(), joined.end(), r); })[0];
+      addEdge(nodeOf[pa], uint32_t(b));
+    } else {
+      addEdge(uint32_t(a), uint32_t(b));
+    }
+  }
+
+  // Graph operations: a node absorbs a neighbour (its pieces and its other edges), unless the two
+  // close a triangle, which absorbing would make one edge of two and so lose a cycle.
+  std::vector<std::set<uint32_t>> adj(nodeCount);
+  for (const auto& [a, b] : edges) {
+    adj[a].insert(b);
+    adj[b].insert(a);
+  }
+  std::vector<uint32_t> mergedInto(nodeCount, kNone);
+  auto resolve = [&](uint32_t node) {
+    while (mergedInto[node] != kNone) node = mergedInto[node];
+    return node;
+  };
+  auto absorb = [&](uint32_t into, uint32_t from) {
+    if (into == from || !adj[into].count(from)) return false; // joining two nodes apart would close a cycle
+    for (uint32_t n : adj[from])
+      if (n != into && adj[into].count(n)) return false;
+    piecesOf[into].insert(piecesOf[into].end(), piecesOf[from].begin(), piecesOf[from].end());
+    piecesOf[from].clear();
+    mergedInto[from] = into;
+    for (uint32_t n : adj[from]) {
+      adj[n].erase(from);
+      if (n != into) {
+        adj[n].insert(into);
+        adj[into].insert(n);
+      }
+    }
+    adj[from].clear();
+    return true;
+  };
+  auto isHub = [&](uint32_t node) { return node >= regions.count && node < oldNodes; };
+  auto weightOf = [&](uint32_t node) {
+    double w = 0;
+    for (uint32_t p : piecesOf[node])
+      for (uint32_t v : pieces.list[p].elements) w += samples.weights[v];
+    return w;
+  };
+
+  // A piece that reaches a region border is cut by it, no cross-section: it joins its neighbour below
+  // in its region (the last whole cross-section before the border), which keeps its place.
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> contactsOf(pieceCount); // (piece, element edges)
+  for (const auto& [pair, n] : pieces.contacts) {
+    contactsOf[pair[0]].push_back({pair[1], n});
+    contactsOf[pair[1]].push_back({pair[0], n});
+  }
+  {
+    std::vector<uint32_t> outermostFirst(pieceCount);
+    std::iota(outermostFirst.begin(), outermostFirst.end(), 0u);
+    std::stable_sort(outermostFirst.begin(), outermostFirst.end(),
+                     [&](uint32_t a, uint32_t b) { return pieces.list[a].level > pieces.list[b].level; });
+    for (uint32_t p : outermostFirst) {
+      const Piece& piece = pieces.list[p];
+      if (mainPiece[piece.region] == p) continue;
+      uint32_t below = kNone, most = 0;
+      bool border = false;
+      for (const auto& [q, n] : contactsOf[p]) {
+        const Piece& other = pieces.list[q];
+        border = border || other.region != piece.region;
+        if (other.region == piece.region && other.level < piece.level && n > most &&
+            adj[resolve(nodeOf[q])].count(resolve(nodeOf[p]))) {
+          below = q;
+          most = n;
+        }
+      }
+      if (border && below != kNone) absorb(resolve(nodeOf[below]), resolve(nodeOf[p]));
+    }
+  }
+
+  // Branch nodes stay where the realization put them (the centroid of the regions they join); their
+  // radius, for telling bumps from branches, is their widest neighbour's.
+  for (uint32_t hub = uint32_t(regions.count); hub < oldNodes; hub++)
+    for (uint32_t n : adj[hub]) radius[hub] = std::max(radius[hub], radius[n]);
+
+  // Leaves that are no branches join their neighbours: a region too small to hold a strip of elements
+  // along its separator (the watershed gave its separator's elements to a neighbour); a leaf piece of
+  // less than half a band (the end of a tip, off its axis: its neighbour's slice is the last whole
+  // cross-section) or one that touches a piece other than its one neighbour (across a region border or
+  // a cut cycle); a leaf branch of band pieces that spans less than one band (no cross-section of its
+  // own) or does not reach more than its junction's radius beyond the junction's surface (a bump).
+  auto touchesOther = [&](uint32_t node, uint32_t neighbour) {
+    for (uint32_t p : piecesOf[node])
+      for (const auto& [q, n] : contactsOf[p]) {
+        uint32_t other = resolve(nodeOf[q]);
+        if (other != node && other != neighbour) return true;
+      }
+    return false;
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (uint32_t leaf = 0; leaf < nodeCount; leaf++) {
+      if (mergedInto[leaf] != kNone || isHub(leaf) || adj[leaf].size() != 1) continue;
+      const uint32_t next = *adj[leaf].begin();
+      if (leaf < regions.count) {
+        if (weightOf(leaf) < kIslandStrip * width[leaf] * spacing) changed = absorb(next, leaf) || changed;
+        continue;
+      }
+      double low = INFINITY, high = -INFINITY;
+      for (uint32_t p : piecesOf[leaf]) {
+        low = std::min(low, distance[pieces.list[p].nearest]);
+        high = std::max(high, distance[pieces.list[p].deepest]);
+      }
+      const double bandWidth = width[pieces.list[piecesOf[leaf][0]].region];
+      if (touchesOther(leaf, next)) {
+        changed = absorb(next, leaf) || changed;
+        continue;
+      }
+      std::vector<uint32_t> chain{leaf};
+      uint32_t previous = leaf, at = next;
+      while (!isHub(at) && at >= regions.count && adj[at].size() == 2) {
+        chain.push_back(at);
+        const uint32_t onward = *adj[at].begin() == previous ? *adj[at].rbegin() : *adj[at].begin();
+        previous = at;
+        at = onward;
+      }
+      double reach = 0;
+      low = INFINITY;
+      high = -INFINITY;
+      for (uint32_t c : chain)
+        for (uint32_t p : piecesOf[c])
+          for (uint32_t v : pieces.list[p].elements) {
+            reach = std::max(reach, norm(samples.positions[v] - position[at]));
+            low = std::min(low, distance[v]);
+            high = std::max(high, distance[v]);
+          }
+      const bool thin = high - low < bandWidth;
+      if (!thin && (adj[at].size() < 3 || reach >= kBranchReach * radius[at])) continue;
+      for (auto c = chain.rbegin(); c != chain.rend(); ++c) changed = absorb(at, *c) || changed;
+    }
+  }
+
+  // Leaves reach into their tips: to the centre of the sphere through the tip (the centroid of the
+  // leaf's elements within a quarter band of the farthest from the separators, beyond the node: the
+  // middle of a flat end, not its corner) and the node's slice, or one radius in from the tip when the
+  // slice is farther back than that; never back from where the slice put them.
+  for (uint32_t leaf = 0; leaf < nodeCount; leaf++) {
+    if (mergedInto[leaf] != kNone || isHub(leaf) || adj[leaf].size() != 1 || !(radius[leaf] > 0)) continue;
+    const Vector3 at = position[leaf], axis = at - position[*adj[leaf].begin()];
+    const double bandWidth = width[pieces.list[piecesOf[leaf][0]].region];
+    auto beyond = [&](uint32_t v) { return dot(samples.positions[v] - at, axis) > 0; };
+    double deepest = -INFINITY;
+    for (uint32_t p : piecesOf[leaf])
+      for (uint32_t v : pieces.list[p].elements)
+        if (beyond(v)) deepest = std::max(deepest, distance[v]);
+    Vector3 sum{0, 0, 0};
+    double total = 0;
+    for (uint32_t p : piecesOf[leaf])
+      for (uint32_t v : pieces.list[p].elements)
+        if (beyond(v) && distance[v] >= deepest - bandWidth / 4) {
+          sum += samples.weights[v] * samples.positions[v];
+          total += samples.weights[v];
+        }
+    if (!(total > 0)) continue;
+    const Vector3 toTip = sum / total - at;
+    const double h = norm(toTip), rho = radius[leaf];
+    const double tipRadius = h < rho ? (rho * rho + h * h) / (2 * h) : rho;
+    if (h - tipRadius < kTipMove * rho) continue;
+    const Vector3 centre = at + (h - tipRadius) / h * toTip;
+    if (solid[pieces.list[piecesOf[leaf][0]].region] && !inside(centre)) continue;
+    position[leaf] = centre;
+  }
+
+  // The refined graph, its nodes in their old order.
+  std::vector<uint32_t> index(nodeCount, kNone);
+  graph.nodes.clear();
+  for (uint32_t node = 0; node < nodeCount; node++)
+    if (mergedInto[node] == kNone) {
+      index[node] = uint32_t(graph.nodes.size());
+      graph.nodes.push_back(position[node]);
+    }
+  graph.edges.clear();
+  for (uint32_t a = 0; a < nodeCount; a++)
+    for (uint32_t b : adj[a])
+      if (a < b) graph.edges.push_back({index[a], index[b]});
+  graph.weights.assign(graph.nodes.size(), 0);
+  std::vector<uint32_t> nodeOfElement(count);
+  for (size_t v = 0; v < count; v++) {
+    nodeOfElement[v] = index[resolve(nodeOf[pieces.of[v]])];
+    graph.weights[nodeOfElement[v]] += samples.weights[v];
+  }
+  graph.radii.clear();
+  return nodeOfElement;
+}
+
+} // namespace cscd

@@ -5,16 +5,16 @@
  * refines the file again the same way.
  */
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { expect, test, type Page } from '@playwright/test';
+import { expect, test } from '@playwright/test';
 import type { Refinement } from '../../lib/core/types.ts';
 import type { SkeletonJson } from '../../lib/io/skeleton.ts';
 import { decimate } from '../../lib/mesh/decimate.ts';
 import { offText, readMesh } from '../unit/support/meshes.ts';
 import { sharedMesh } from '../paths.ts';
-import { enterStage, openPage, runWhole, waitForState } from './studio.ts';
+import { comparable, downloadSkeletonJson, enterStage, openPage, runWhole, waitForState } from './studio.ts';
 
 let folder: string;
 let file: string;
@@ -33,14 +33,6 @@ test.afterAll(() => rmSync(folder, { recursive: true, force: true }));
 
 const cli = (...args: string[]) => execFileSync(process.execPath, ['cli/cscd.mjs', ...args], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] });
 
-async function downloadJson(page: Page): Promise<SkeletonJson> {
-  const [download] = await Promise.all([page.waitForEvent('download'), page.getByTestId('dl-skeleton-json').click()]);
-  return JSON.parse(readFileSync(await download.path(), 'utf8')) as SkeletonJson;
-}
-
-/** Everything but the run's wall-clock times and the file name it was given. */
-const comparable = ({ mesh: _mesh, stats: { timings: _timings, ...stats }, ...rest }: SkeletonJson) => ({ ...rest, stats });
-
 test('a coarse mesh is refined to compute on, shown refined, and gets the CLI skeleton with cycles = genus', async ({ page }) => {
   test.slow();
   const { refined } = JSON.parse(cli('info', file)) as { refined: Refinement };
@@ -56,7 +48,7 @@ test('a coarse mesh is refined to compute on, shown refined, and gets the CLI sk
   await runWhole(page, 40);
   await expect(page.getByTestId('sk-cycles')).toHaveText('4');
   await enterStage(page, 'skeleton');
-  const browser = await downloadJson(page);
+  const browser = await downloadSkeletonJson(page);
   expect(browser.vertexToNode).toHaveLength(vertices);
   expect(browser.stats.refined).toEqual(refined);
   const node = JSON.parse(cli('skeleton', file, '--n', '40')) as SkeletonJson;
@@ -68,5 +60,5 @@ test('a coarse mesh is refined to compute on, shown refined, and gets the CLI sk
   await runWhole(page, 40);
   await expect(page.getByTestId('sk-cycles')).toHaveText('4');
   await enterStage(page, 'skeleton');
-  expect(comparable(await downloadJson(page))).toEqual(comparable(node));
+  expect(comparable(await downloadSkeletonJson(page))).toEqual(comparable(node));
 });

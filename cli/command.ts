@@ -1,7 +1,7 @@
 /** What every CLI command shares: its description for help and parsing, errors, mesh input. */
 import { readFile } from 'node:fs/promises';
 import { loadCoreNode } from '../lib/core/node.ts';
-import type { Core, MeshArrays, Surface } from '../lib/core/types.ts';
+import type { Core, MeshArrays, RefinedSurface } from '../lib/core/types.ts';
 import { parseMesh, type ParsedMesh } from '../lib/io/index.ts';
 import { repairMesh } from '../lib/io/repair.ts';
 import { decimate } from '../lib/mesh/decimate.ts';
@@ -101,9 +101,16 @@ export function decimateIfAsked<M extends MeshArrays>(mesh: M, values: OptionVal
   return { ...mesh, ...decimated, decimatedFrom: faces };
 }
 
-/** Opens the geodesic solver, first warning on stderr when the mesh is above the size limit (lib/mesh/limits.ts). */
-export async function openSolver(mesh: MeshArrays, file: string): Promise<Surface> {
+/**
+ * Opens the geodesic solver, on the mesh refined when it is coarse (lib/mesh/refine.ts; said on
+ * stderr, results stay per vertex of `mesh`), first warning on stderr when the mesh is above the size
+ * limit (lib/mesh/limits.ts).
+ */
+export async function openSolver(mesh: MeshArrays, file: string): Promise<RefinedSurface> {
   const warning = sizeWarning(mesh.triangles.length / 3, mesh.positions.length / 3);
   if (warning) process.stderr.write(`cscd: warning: ${file}: ${warning} (--decimate ${DECIMATE_TARGET} makes it faster)\n`);
-  return (await getCore()).openSurface(mesh);
+  const surface = (await getCore()).openRefinedSurface(mesh);
+  const { refined } = surface;
+  if (refined) process.stderr.write(`cscd: refined ${file} for computation from ${refined.fromFaces} to ${refined.toFaces} faces (the same surface, sampled more densely)\n`);
+  return surface;
 }

@@ -5,8 +5,8 @@
 //   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json>
 //
 // Writes the skeleton as our JSON and prints, as the last line of stdout, {"seconds": S}: the wall time
-// of openSurface (the per-mesh geodesic solver) and skeleton, i.e. from the parsed mesh to the skeleton
-// (reading the file, loading the WASM and writing excluded).
+// of openRefinedSurface (refining a coarse mesh, as the CLI does, and the per-mesh geodesic solver) and
+// skeleton, i.e. from the parsed mesh to the skeleton (reading the file, loading the WASM and writing excluded).
 import { readFile, writeFile } from 'node:fs/promises';
 import { loadCoreNode } from '../../lib/core/node.ts';
 import { defaultOptions } from '../../lib/core/options.ts';
@@ -23,7 +23,7 @@ const mesh = parseMesh(await readFile(meshPath), meshPath);
 const core = await loadCoreNode();
 
 const started = performance.now();
-const surface = core.openSurface(mesh);
+const surface = core.openRefinedSurface(mesh);
 let skeleton;
 try {
   skeleton = surface.skeleton({});

@@ -9,7 +9,7 @@ export const distance: Command = {
     source: { type: 'string', value: 'V', required: true, description: 'source vertex index (0-based)' },
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
-  details: 'Writes {"distance":[...]} with one heat-method distance per vertex, in the order of the file (null for\nvertices in other components and for vertices the repair removed).',
+  details: 'Writes {"distance":[...], "refined"} with one heat-method distance per vertex, in the order of the file (null for\nvertices in other components and for vertices the repair removed); `refined` says how a coarse mesh was\nrefined to compute on (null: it was not).',
   async run([file], options) {
     const mesh = await readMesh(file);
     // Vertices are numbered as in the file, in and out, even when the repair renumbered them.
@@ -19,7 +19,7 @@ export const distance: Command = {
     let json: string;
     try {
       const distance = surface.distanceFromVertex(mesh.vertexMap[source]);
-      json = JSON.stringify({ distance: Array.from(mesh.vertexMap, (v) => (v < 0 ? null : distance[v])) });
+      json = JSON.stringify({ distance: Array.from(mesh.vertexMap, (v) => (v < 0 ? null : distance[v])), refined: surface.refined });
     } finally {
       surface.dispose();
     }

@@ -1,7 +1,7 @@
 import { writeFile } from 'node:fs/promises';
 import { defaultOptions, optionRanges } from '../../lib/core/options.ts';
 import { random } from '../../lib/core/random.ts';
-import type { MeshArrays, Options, Polyline, Separator } from '../../lib/core/types.ts';
+import type { MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
 import { UsageError, openSolver, readMesh, type Command, type OptionSpec, type OptionValues } from '../command.ts';
 
 export type Point = [number, number, number];
@@ -29,6 +29,8 @@ export interface SeparatorJson {
   centroidInside: boolean;
   timings: Record<string, number>;
   options: Options;
+  /** How a coarse mesh was refined to compute on (lib/mesh/refine.ts), or null; vertex indices >= the mesh's count are new vertices. */
+  refined: Refinement | null;
 }
 
 /** Every value of Options['target'] (the Record makes the compiler check that none is missing). */
@@ -218,6 +220,7 @@ export function separatorJson(result: Separator, options: Options): SeparatorJso
     centroidInside: result.centroidInside,
     timings: { ...result.timings },
     options,
+    refined: result.refined ?? null,
   };
 }
 
@@ -232,7 +235,7 @@ export const separator: Command = {
   },
   details: [
     'Writes {source, status, message, distance, cutLocus, boundaryExtremities, target, ends, closed, paths, approxLoop, loop, sphere,',
-    'approxLength, length, areas, score, centroidInside, timings, options} (see docs/cli.md). A source',
+    'approxLength, length, areas, score, centroidInside, timings, options, refined} (see docs/cli.md). A source',
     'without a separator is not an error: status tells why, with a warning on stderr and exit code 0.',
   ].join('\n'),
   async run([file], values) {

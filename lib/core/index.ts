@@ -1,6 +1,7 @@
 // The CSCD core for TypeScript callers (CLI, worker, tests): a thin layer over the embind module that
 // turns its error strings into CoreError and frees WASM objects through dispose().
 import createCscdModule, { type CscdModule, type CscdModuleOptions, type PipelineHandle, type SurfaceHandle } from '../../build/wasm/cscd.js';
+import { refine, refinedPoint, refinementOf, skeletonForInput } from '../mesh/refine.ts';
 import {
   CoreError,
   type Core,
@@ -10,6 +11,8 @@ import {
   type Options,
   type Pipeline,
   type PipelineProgress,
+  type RefinedSurface,
+  type Refinement,
   type Separator,
   type Skeleton,
   type SkeletonInput,
@@ -108,12 +111,7 @@ class WasmSurface implements Surface {
   }
 
   skeleton(options: Partial<Options> = {}): Skeleton {
-    const pipeline = this.pipeline(options);
-    try {
-      return pipeline.finish();
-    } finally {
-      pipeline.dispose();
-    }
+    return skeletonOf(this, options);
   }
 
   distanceFromPoints(points: SurfacePoint[]): Float64Array {
@@ -130,6 +128,93 @@ class WasmSurface implements Surface {
   private live(): SurfaceHandle {
     if (!this.handle) throw new CoreError('this surface has been disposed');
     return this.handle;
+  }
+}
+
+/** The whole pipeline of `surface` in one call. */
+function skeletonOf(surface: Surface, options: Partial<Options>): Skeleton {
+  const pipeline = surface.pipeline(options);
+  try {
+    return pipeline.finish();
+  } finally {
+    pipeline.dispose();
+  }
+}
+
+/** A pipeline on the refined mesh whose skeleton is for the mesh as given. */
+class RefinedPipeline implements Pipeline {
+  constructor(
+    private readonly inner: Pipeline,
+    private readonly refined: Refinement | null,
+  ) {}
+
+  step(sources: number): PipelineProgress {
+    return this.inner.step(sources);
+  }
+
+  finish(): Skeleton {
+    return skeletonForInput(this.inner.finish(), this.refined);
+  }
+
+  dispose(): void {
+    this.inner.dispose();
+  }
+}
+
+/** See RefinedSurface (types.ts): the solver is opened on the refined mesh, whose first vertices are the input's. */
+class WasmRefinedSurface implements RefinedSurface {
+  constructor(
+    private readonly inner: Surface,
+    readonly facts: MeshFacts,
+    readonly refined: Refinement | null,
+  ) {}
+
+  distanceFromVertex(vertex: number): Float64Array {
+    return this.cut(this.inner.distanceFromVertex(this.checked(vertex)));
+  }
+
+  exactDistanceFromVertex(vertex: number): Float64Array {
+    return this.cut(this.inner.exactDistanceFromVertex(this.checked(vertex)));
+  }
+
+  distanceFromPoints(points: SurfacePoint[]): Float64Array {
+    const levels = this.refined?.levels ?? 0;
+    return this.cut(this.inner.distanceFromPoints(points.map((p) => refinedPoint(p.face, p.barycentric, levels))));
+  }
+
+  separator(source: number, options: Partial<Options> = {}): Separator {
+    const result = this.inner.separator(this.checked(source), options);
+    const { cutLocus } = result;
+    return {
+      ...result,
+      distance: this.cut(result.distance),
+      cutLocus: { ...cutLocus, angleDeviation: this.cut(cutLocus.angleDeviation), laplacian: this.cut(cutLocus.laplacian) },
+      refined: this.refined,
+    };
+  }
+
+  pipeline(options: Partial<Options> = {}): Pipeline {
+    return new RefinedPipeline(this.inner.pipeline(options), this.refined);
+  }
+
+  skeleton(options: Partial<Options> = {}): Skeleton {
+    return skeletonOf(this, options);
+  }
+
+  dispose(): void {
+    this.inner.dispose();
+  }
+
+  /** The vertex, when it is one of the input's (the refined mesh has more, which no caller can name). */
+  private checked(vertex: number): number {
+    if (!(Number.isInteger(vertex) && vertex >= 0 && vertex < this.facts.vertices)) {
+      throw new CoreError(`vertex ${vertex} is out of range (the mesh has ${this.facts.vertices} vertices)`);
+    }
+    return vertex;
+  }
+
+  private cut(values: Float64Array): Float64Array {
+    return this.refined ? values.slice(0, this.facts.vertices) : values;
   }
 }
 
@@ -156,6 +241,12 @@ class WasmCore implements Core {
       this.unwrap(error);
     }
     return new WasmSurface(handle, this.module, this.unwrap);
+  }
+
+  openRefinedSurface(mesh: MeshArrays): RefinedSurface {
+    const facts = this.inspect(mesh);
+    const refined = refinementOf(facts);
+    return new WasmRefinedSurface(this.openSurface(refine(mesh, refined?.levels ?? 0)), facts, refined);
   }
 }
 

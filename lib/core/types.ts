@@ -39,6 +39,18 @@ export interface MeshFacts {
 }
 
 /**
+ * How a coarse mesh was refined before computing on it (lib/mesh/refine.ts): `levels` rounds of
+ * midpoint subdivision took it from `fromFaces` to `toFaces` faces, the same surface sampled more
+ * densely. Its `fromVertices` vertices are the refined mesh's first ones.
+ */
+export interface Refinement {
+  fromVertices: number;
+  fromFaces: number;
+  toFaces: number;
+  levels: number;
+}
+
+/**
  * Every option of the CSCD pipeline, with the same names in C++ (wasm/src/cscd/options.h), the
  * bindings, worker messages, UI labels and CLI flags. Defaults: `defaultOptions` in lib/core/options.ts.
  */
@@ -127,6 +139,12 @@ export interface Separator {
   centroidInside: boolean;
   /** Milliseconds per stage. */
   timings: Record<string, number>;
+  /**
+   * Set by a RefinedSurface: how the mesh was refined (null: not at all). Then `distance` and the
+   * cut locus's per-vertex fields hold the input's vertices, while vertex indices (cut-locus nodes,
+   * target, ends) may name vertices the refinement added (>= the input's count; their points are given).
+   */
+  refined?: Refinement | null;
 }
 
 /** What became of a candidate separator in stage 2. */
@@ -164,6 +182,8 @@ export interface Skeleton {
     seed: number;
     /** Milliseconds per stage. */
     timings: Record<string, number>;
+    /** Set by a RefinedSurface: how the mesh was refined (null: not at all); vertexToNode then holds the input's vertices. */
+    refined?: Refinement | null;
   };
 }
 
@@ -208,6 +228,16 @@ export interface Surface {
   dispose(): void;
 }
 
+/**
+ * A Surface on a mesh as given whose computations run on the mesh refined when it is coarse
+ * (Core.openRefinedSurface, lib/mesh/refine.ts). `facts`, source vertices, surface points and every
+ * per-vertex output are those of the mesh as given (its vertices come first in the refined mesh).
+ */
+export interface RefinedSurface extends Surface {
+  /** What was done to the mesh before opening the solver, or null: it is used as it is. */
+  readonly refined: Refinement | null;
+}
+
 /** A curve skeleton from any tool, as the evaluation takes it. */
 export interface SkeletonInput {
   /** Node positions, xyz per node. */
@@ -249,6 +279,11 @@ export interface Core {
   inspect(mesh: MeshArrays): MeshFacts;
   /** Builds the per-mesh state; throws CoreError when the mesh cannot be processed (e.g. non-manifold). */
   openSurface(mesh: MeshArrays): Surface;
+  /**
+   * openSurface on `mesh` refined when it is coarse (the same surface, sampled densely enough for
+   * CSCD-M), with results per vertex of `mesh`: what every consumer that computes on a user's mesh uses.
+   */
+  openRefinedSurface(mesh: MeshArrays): RefinedSurface;
   /** The reconstruction error of a skeleton against a mesh (the mesh need not be manifold). */
   evaluate(mesh: MeshArrays, skeleton: SkeletonInput): Evaluation;
 }

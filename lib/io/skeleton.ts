@@ -135,6 +135,7 @@ export function skeletonJson(skeleton: Skeleton, meta: SkeletonMeta): SkeletonJs
       cycles: stats.cycles,
       seed: stats.seed,
       timings: { ...stats.timings },
+      refined: stats.refined ?? null,
     },
     options: orderedOptions(meta.options),
   };

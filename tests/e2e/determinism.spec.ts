@@ -6,17 +6,9 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { expect, test, type Page } from '@playwright/test';
+import { expect, test } from '@playwright/test';
 import type { SkeletonJson } from '../../lib/io/skeleton.ts';
-import { enterStage, openPage, runWhole, setNumber } from './studio.ts';
-
-async function downloadJson(page: Page): Promise<SkeletonJson> {
-  const [file] = await Promise.all([page.waitForEvent('download'), page.getByTestId('dl-skeleton-json').click()]);
-  return JSON.parse(readFileSync(await file.path(), 'utf8')) as SkeletonJson;
-}
-
-/** Everything but the run's wall-clock times and the file name it was given. */
-const comparable = ({ mesh: _mesh, stats: { timings: _timings, ...stats }, ...rest }: SkeletonJson) => ({ ...rest, stats });
+import { comparable, downloadSkeletonJson, enterStage, openPage, runWhole, setNumber } from './studio.ts';
 
 test('the page and the CLI give the same skeleton for the same mesh, options and seed', async ({ page }) => {
   test.slow();
@@ -24,7 +16,7 @@ test('the page and the CLI give the same skeleton for the same mesh, options and
   await setNumber(page, 'seed', 5);
   await runWhole(page, 16);
   await enterStage(page, 'skeleton');
-  const browser = await downloadJson(page);
+  const browser = await downloadSkeletonJson(page);
   expect(browser.options).toMatchObject({ n: 16, seed: 5 });
 
   const dir = mkdtempSync(path.join(tmpdir(), 'cscd-determinism-'));

@@ -1,5 +1,7 @@
 /** Helpers shared by the end-to-end tests: page state, stages of the timeline, parameters, layers. */
+import { readFileSync } from 'node:fs';
 import { expect, type Locator, type Page } from '@playwright/test';
+import type { SkeletonJson } from '../../lib/io/skeleton.ts';
 
 export const body = (page: Page): Locator => page.locator('body');
 
@@ -55,3 +57,12 @@ export async function runWhole(page: Page, n: number, wait = true): Promise<void
 /** A number at the start of an element's text. */
 export const figure = async (page: Page, id: string): Promise<number> =>
   Number((await page.getByTestId(id).textContent())?.match(/^\d+/)?.[0] ?? NaN);
+
+/** The skeleton JSON the page saves (*Save* → JSON), read back. */
+export async function downloadSkeletonJson(page: Page): Promise<SkeletonJson> {
+  const [file] = await Promise.all([page.waitForEvent('download'), page.getByTestId('dl-skeleton-json').click()]);
+  return JSON.parse(readFileSync(await file.path(), 'utf8')) as SkeletonJson;
+}
+
+/** Everything of a skeleton JSON but the run's wall-clock times and the file name it was given. */
+export const comparable = ({ mesh: _mesh, stats: { timings: _timings, ...stats }, ...rest }: SkeletonJson) => ({ ...rest, stats });

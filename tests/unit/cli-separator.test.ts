@@ -15,7 +15,7 @@ afterAll(() => rmSync(tmp, { recursive: true, force: true }));
 const KEYS = [
   'source', 'status', 'message', 'distance', 'cutLocus', 'boundaryExtremities', 'target', 'ends', 'closed', 'paths',
   'approxLoop', 'loop', 'sphere',
-  'approxLength', 'length', 'areas', 'score', 'centroidInside', 'timings', 'options',
+  'approxLength', 'length', 'areas', 'score', 'centroidInside', 'timings', 'options', 'refined',
 ];
 
 

@@ -6,14 +6,15 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { defaultOptions } from '../../lib/core/options.ts';
 import { parseSkeleton, spanningForest, type SkeletonJson } from '../../lib/io/skeleton.ts';
 import { sharedMesh } from '../paths.ts';
-import { icosphere, offText } from './support/meshes.ts';
+import { decimate } from '../../lib/mesh/decimate.ts';
+import { icosphere, offText, readMesh } from './support/meshes.ts';
 import { cscd } from './support/cli.ts';
 
 const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-skeleton-'));
 afterAll(() => rmSync(tmp, { recursive: true, force: true }));
 
 const KEYS = ['mesh', 'nodes', 'radii', 'edges', 'vertexToNode', 'separators', 'separatorsClosed', 'stats', 'options'];
-const STATS = ['n', 'candidates', 'pruned', 'packed', 'cycles', 'seed', 'timings'];
+const STATS = ['n', 'candidates', 'pruned', 'packed', 'cycles', 'seed', 'timings', 'refined'];
 /** The one part of the JSON that changes from run to run. */
 const withoutTimings = (text: string) => text.replace(/"timings":\{[^{}]*\}/, '"timings":{}');
 
@@ -38,6 +39,8 @@ describe('cscd skeleton', () => {
     expect(json.mesh).toBe(twoTorus);
     expect(json.options).toEqual({ ...defaultOptions });
     expect(json.stats.seed).toBe(defaultOptions.seed);
+    // two_torus is fine enough to compute on as it is (lib/mesh/refine.ts).
+    expect(json.stats.refined).toBeNull();
 
     const nodeCount = json.nodes.length;
     expect(nodeCount).toBeGreaterThan(0);
@@ -123,6 +126,28 @@ describe('cscd skeleton', () => {
     // The centre of the unit sphere, and its radius.
     expect(Math.hypot(...one.nodes[0])).toBeLessThan(1e-6);
     expect(one.radii[0]).toBeCloseTo(1, 2);
+  }, 120_000);
+
+  it('refines a coarse mesh to compute on, and writes the skeleton for the mesh as given', () => {
+    // fertility_9k decimated to 200 faces: genus 4, which it loses unrefined (docs/refine.md).
+    const mesh = decimate(readMesh(sharedMesh('fertility_9k.ply')), 200);
+    const coarse = path.join(tmp, 'coarse.off');
+    writeFileSync(coarse, offText(mesh));
+    const faces = mesh.triangles.length / 3;
+
+    const info = JSON.parse(cscd('info', coarse).stdout) as { faces: number; refined: { fromVertices: number; fromFaces: number; toFaces: number; levels: number } };
+    expect(info.faces).toBe(faces);
+    expect(info.refined.fromVertices).toBe(mesh.positions.length / 3);
+    expect(info.refined.fromFaces).toBe(faces);
+    expect(info.refined.toFaces).toBe(faces * 4 ** info.refined.levels);
+
+    const result = cscd('skeleton', coarse, '--n', '40');
+    expect(result.status, result.stderr).toBe(0);
+    expect(result.stderr).toBe(`cscd: refined ${coarse} for computation from ${faces} to ${info.refined.toFaces} faces (the same surface, sampled more densely)\n`);
+    const skeleton = JSON.parse(result.stdout) as SkeletonJson;
+    expect(skeleton.stats.refined).toEqual(info.refined);
+    expect(skeleton.vertexToNode).toHaveLength(mesh.positions.length / 3);
+    expect(skeleton.stats.cycles).toBe(4);
   }, 120_000);
 });
 

@@ -52,7 +52,7 @@ describe('skeleton writers', () => {
       '"vertexToNode":[0,0,1,2,3,3]',
       '"separators":[[[2,2,2],[3,3,3],[4,4,4]],[[0,0,1],[0,1,1],[1,0,1]]]',
       '"separatorsClosed":[false,true]',
-      '"stats":{"n":3,"candidates":3,"pruned":1,"packed":2,"cycles":1,"seed":7,"timings":{"stage1":12.5,"stage2":0.25}}',
+      '"stats":{"n":3,"candidates":3,"pruned":1,"packed":2,"cycles":1,"seed":7,"timings":{"stage1":12.5,"stage2":0.25},"refined":null}',
       `"options":${OPTIONS_JSON}}`,
     ].join(',')}\n`);
     expect(writeSkeletonJson(triangleWithTail(), meta)).toBe(text);

@@ -26,6 +26,7 @@ import { SurfaceLayer } from './viewer/layers.ts';
 import { Viewer } from './viewer/viewer.ts';
 import { WholeShape } from './whole-shape.ts';
 import { GeometryClient, WorkerError } from './worker/client.ts';
+import type { Refinement } from '../../lib/core/types.ts';
 import type { DecimatedReply, OpenedReply, WriteRequest } from './worker/protocol.ts';
 
 const initial = readUrl();
@@ -170,6 +171,7 @@ function showMesh(reply: OpenedReply, sample: string | null): void {
   if (degenerateFaces) notes.push(`${degenerateFaces} degenerate face${degenerateFaces > 1 ? 's' : ''} (repeated vertex or zero area)`);
   if (unreferencedVertices) notes.push(`${unreferencedVertices} ${unreferencedVertices > 1 ? 'vertices' : 'vertex'} used by no face`);
   if (reply.surfaceError) notes.push(`Geodesic distance is unavailable: ${reply.surfaceError}`);
+  if (reply.refined) notes.push(refinedNote(reply.refined));
   mesh = { fileName: reply.fileName, sample, surfaceError: reply.surfaceError, openMs: t.parseMs + t.inspectMs, notes, faces, decimatedFrom: null };
   showSurface(reply.positions, reply.triangles);
   viewer.frame();
@@ -183,12 +185,19 @@ function showMesh(reply: OpenedReply, sample: string | null): void {
   delete document.body.dataset.decimatedFrom;
 }
 
+/** The line in the notes for a mesh the worker refined to compute on (lib/mesh/refine.ts). */
+function refinedNote({ fromFaces, toFaces }: Refinement): string {
+  const count = (n: number) => n.toLocaleString('en-US');
+  return `Refined for computation: ${count(fromFaces)} → ${count(toFaces)} faces, the same surface (each edge split at its midpoint)`;
+}
+
 /** The decimated mesh replaces the one shown (same view); every stage now computes on it. */
 function showDecimated(reply: DecimatedReply): void {
   if (!mesh) return;
   const { faces } = reply.facts;
-  const note = `Decimated from ${reply.decimatedFrom} to ${faces} faces (quadric edge collapse; genus, components and holes kept)`;
-  mesh = { ...mesh, faces, decimatedFrom: reply.decimatedFrom, notes: [...mesh.notes, note] };
+  const notes = [...mesh.notes, `Decimated from ${reply.decimatedFrom} to ${faces} faces (quadric edge collapse; genus, components and holes kept)`];
+  if (reply.refined) notes.push(refinedNote(reply.refined));
+  mesh = { ...mesh, faces, decimatedFrom: reply.decimatedFrom, notes };
   showSurface(reply.positions, reply.triangles);
   panel.setFacts(reply.facts);
   panel.setNotes(mesh.notes);

@@ -12,7 +12,7 @@
  * at its next step; when it has not answered within CANCEL_GRACE_MS (a step that takes long, such as
  * opening the geodesic solver, or hangs), the worker is replaced the same way, without counting as a crash.
  */
-import type { Options } from '../../../lib/core/types.ts';
+import type { Options, Refinement } from '../../../lib/core/types.ts';
 import {
   type DecimatedReply,
   type ErrorKind,
@@ -66,10 +66,13 @@ interface Pending {
   cancellable: boolean;
 }
 
-/** What the worker needs to open the page's mesh again: the file, or the arrays of the decimated mesh. */
+/**
+ * What the worker needs to open the page's mesh again: the file (refined again the same way when
+ * coarse), or the arrays of the decimated mesh as the worker computed on them.
+ */
 type KeptMesh =
   | { fileName: string; bytes: ArrayBuffer }
-  | { fileName: string; positions: Float64Array; triangles: Uint32Array };
+  | { fileName: string; positions: Float64Array; triangles: Uint32Array; refined: Refinement | null };
 
 const UNCANCELLABLE = new Set<WorkerRequest['type']>(['open', 'restore', 'write']);
 
@@ -121,7 +124,7 @@ export class GeometryClient {
     const fileName = this.current?.fileName ?? 'mesh';
     const job = this.job({ type: 'decimate', targetFaces });
     const result = job.result.then((reply) => {
-      this.current = { fileName, positions: reply.exactPositions, triangles: reply.triangles.slice() };
+      this.current = { fileName, positions: reply.exactPositions, triangles: reply.triangles.slice(), refined: reply.refined };
       return reply;
     });
     return { result, cancel: job.cancel };
@@ -263,7 +266,7 @@ export class GeometryClient {
       restored = this.request({ type: 'open', fileName: kept.fileName, bytes: copy, withArrays: false }, [copy]);
     } else if (kept) {
       const positions = kept.positions.slice(), triangles = kept.triangles.slice();
-      restored = this.request({ type: 'restore', fileName: kept.fileName, positions, triangles }, [positions.buffer, triangles.buffer]);
+      restored = this.request({ type: 'restore', fileName: kept.fileName, positions, triangles, refined: kept.refined }, [positions.buffer, triangles.buffer]);
     }
     if (why === 'crash') this.hooks.onCrash?.(message, restored);
     else this.hooks.onRestart?.(restored);

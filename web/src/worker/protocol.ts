@@ -5,7 +5,7 @@
  * or an `error` with the same id, and may send `progress` events for it before that. Large arrays
  * travel in transfer lists in both directions (see `transferables`).
  */
-import type { Evaluation, MeshFacts, Options, Separator, Skeleton } from '../../../lib/core/types.ts';
+import type { Evaluation, MeshFacts, Options, Refinement, Separator, Skeleton } from '../../../lib/core/types.ts';
 import type { SkeletonFormat } from '../../../lib/io/skeleton.ts';
 import type { MeshFormat } from '../../../lib/io/types.ts';
 
@@ -90,7 +90,10 @@ export interface DecimateRequest {
   targetFaces: number;
 }
 
-/** Opens a mesh this worker's predecessor had decimated (after a restart): its arrays, no parsing or repair. */
+/**
+ * Opens a mesh this worker's predecessor had decimated (after a restart): the arrays it computed on,
+ * no parsing, repair or refinement.
+ */
 export interface RestoreRequest {
   type: 'restore';
   id: number;
@@ -98,6 +101,8 @@ export interface RestoreRequest {
   /** Transferred. */
   positions: Float64Array;
   triangles: Uint32Array;
+  /** How the predecessor refined the decimated mesh into these arrays (DecimatedReply.refined). */
+  refined: Refinement | null;
 }
 
 /**
@@ -144,6 +149,12 @@ export interface OpenedReply {
   /** What the repair on load did (lib/io/repair.ts), one sentence each; the arrays and facts are after it. */
   repairs: string[];
   /**
+   * How the worker refined a coarse mesh to compute on (lib/mesh/refine.ts), or null. The arrays are
+   * then those of the refined mesh (the same surface; vertex numbers in requests and replies are its
+   * own), the facts those of the mesh as opened.
+   */
+  refined: Refinement | null;
+  /**
    * Why geodesic computations are unavailable on this mesh (e.g. non-manifold), or null. Known at once
    * for a mesh whose facts show it; otherwise the geodesic solver is only opened by the first request
    * that needs it, which then fails with the reason.
@@ -162,6 +173,8 @@ export interface DecimatedReply {
   triangles: Uint32Array;
   facts: MeshFacts;
   decimatedFrom: number;
+  /** How the decimated mesh was then refined, when it came out coarse (as in OpenedReply: the arrays are after it, the facts before). */
+  refined: Refinement | null;
   timings: { decimateMs: number };
 }
 

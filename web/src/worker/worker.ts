@@ -6,12 +6,13 @@
  */
 import { createCore } from '../../../lib/core/index.ts';
 import { defaultOptions } from '../../../lib/core/options.ts';
-import type { Core, MeshArrays, MeshFacts, Options, Pipeline, Separator, Skeleton, Surface } from '../../../lib/core/types.ts';
+import type { Core, MeshArrays, MeshFacts, Options, Pipeline, Refinement, Separator, Skeleton, Surface } from '../../../lib/core/types.ts';
 import { parseMesh } from '../../../lib/io/index.ts';
 import { repairMesh } from '../../../lib/io/repair.ts';
 import { writeLoopsObj } from '../../../lib/io/loops.ts';
 import { SKELETON_WRITERS } from '../../../lib/io/skeleton.ts';
 import { Decimator } from '../../../lib/mesh/decimate.ts';
+import { refine, refinementOf, skeletonForInput } from '../../../lib/mesh/refine.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
 import {
   transferables,
@@ -46,8 +47,11 @@ const corePromise: Promise<Core> = fetch(wasmUrl)
 corePromise.catch(() => {}); // reported when a request needs the core
 
 interface OpenMesh {
+  /** What the worker computes on and the page shows: the mesh as opened, refined when it was coarse. */
   mesh: MeshArrays;
   facts: MeshFacts;
+  /** How it was refined (lib/mesh/refine.ts), or null. */
+  refined: Refinement | null;
   /** The geodesic solver, opened by the first request that needs it. */
   surface: Surface | null;
   /** Why the solver cannot be opened on this mesh, once known. */
@@ -104,10 +108,9 @@ async function open(request: OpenRequest): Promise<void> {
   const t = performance.now();
   const parsed = parseMesh(new Uint8Array(request.bytes), fileName);
   // Repair on load is part of reading the file: the page only ever sees the repaired mesh.
-  const { mesh: arrays, repairs } = repairMesh(parsed);
-  const mesh = { ...parsed, ...arrays };
+  const { mesh: repaired, repairs } = repairMesh(parsed);
   const parseMs = performance.now() - t;
-  const { facts, surfaceError, inspectMs } = await accept(id, mesh);
+  const { mesh, facts, refined, surfaceError, inspectMs } = await accept(id, repaired);
 
   const positions = request.withArrays ? new Float32Array(mesh.positions) : new Float32Array(0);
   // A copy: the page gets its own (transferred); the worker keeps the mesh for `evaluate`.
@@ -117,12 +120,13 @@ async function open(request: OpenRequest): Promise<void> {
       type: 'opened',
       id,
       fileName,
-      format: mesh.format,
+      format: parsed.format,
       positions,
       triangles,
       facts,
-      warnings: mesh.warnings,
+      warnings: parsed.warnings,
       repairs,
+      refined,
       surfaceError,
       timings: { parseMs, inspectMs },
     },
@@ -133,25 +137,34 @@ async function open(request: OpenRequest): Promise<void> {
 /** A mesh the page had decimated in a worker before this one: opened as it is. */
 async function restore(request: RestoreRequest): Promise<void> {
   const { id, fileName } = request;
-  const { facts, surfaceError, inspectMs } = await accept(id, { positions: request.positions, triangles: request.triangles });
+  const { facts, refined, surfaceError, inspectMs } = await accept(id, { positions: request.positions, triangles: request.triangles }, request.refined);
   // Only says the mesh is open again: the page still shows it, with the format and notes of its first open.
   const empty = { positions: new Float32Array(0), triangles: new Uint32Array(0) };
-  post({ type: 'opened', id, fileName, format: 'ply', ...empty, facts, warnings: [], repairs: [], surfaceError, timings: { parseMs: 0, inspectMs } });
+  post({ type: 'opened', id, fileName, format: 'ply', ...empty, facts, warnings: [], repairs: [], refined, surfaceError, timings: { parseMs: 0, inspectMs } });
 }
 
 /**
- * Inspects a mesh and makes it the open one (releasing the previous one), without its solver. On a
- * mesh whose facts already say it is not an orientable manifold the solver is tried at once: it fails
- * fast, and the page learns why before anything is asked.
+ * Inspects a mesh, refines it when it is coarse (lib/mesh/refine.ts; `known` given: the arrays are
+ * already the refined mesh) and makes it the open one (releasing the previous one), without its
+ * solver. Returns the arrays it computes on and the facts of the mesh as given, which is what the page
+ * lists. On a mesh whose facts already say it is not an orientable manifold the solver is tried at
+ * once: it fails fast, and the page learns why before anything is asked.
  */
-async function accept(id: number, mesh: MeshArrays): Promise<{ facts: MeshFacts; surfaceError: string | null; inspectMs: number }> {
+async function accept(
+  id: number,
+  input: MeshArrays,
+  known?: Refinement | null,
+): Promise<{ mesh: MeshArrays; facts: MeshFacts; refined: Refinement | null; surfaceError: string | null; inspectMs: number }> {
   const core = await loadCore(id);
   progress(id, 'inspect', 'checking the mesh…');
   const t = performance.now();
-  const facts = core.inspect(mesh);
+  const facts = core.inspect(input);
+  const refined = known !== undefined ? known : refinementOf(facts);
+  const mesh = refined && known === undefined ? refine(input, refined.levels) : input;
+  const computedOn = mesh === input ? facts : core.inspect(mesh);
   const inspectMs = performance.now() - t;
   current?.surface?.dispose();
-  current = { mesh, facts, surface: null, surfaceError: null, lastSource: null, lastSkeleton: null };
+  current = { mesh, facts: computedOn, refined, surface: null, surfaceError: null, lastSource: null, lastSkeleton: null };
   if (!facts.manifold || !facts.consistentlyOriented) {
     try {
       current.surface = core.openSurface(mesh);
@@ -161,7 +174,7 @@ async function accept(id: number, mesh: MeshArrays): Promise<{ facts: MeshFacts;
       current.surfaceError = message;
     }
   }
-  return { facts, surfaceError: current.surfaceError, inspectMs };
+  return { mesh, facts, refined, surfaceError: current.surfaceError, inspectMs };
 }
 
 /**
@@ -409,15 +422,14 @@ async function decimate(request: DecimateRequest): Promise<void> {
     const p = decimator.progress;
     post({ type: 'progress', id, stage: 'decimate', message: `decimating: ${p.faces} faces, target ${p.target}…`, fraction: p.fraction });
   }
-  const mesh = decimator.result();
   const decimateMs = performance.now() - t;
-  const { facts } = await accept(id, mesh);
+  const { mesh, facts, refined } = await accept(id, decimator.result());
   const positions = new Float32Array(mesh.positions);
   // Copies for the page: the worker keeps the mesh it computes on.
-  const exactPositions = mesh.positions.slice();
+  const exactPositions = Float64Array.from(mesh.positions);
   const triangles = mesh.triangles.slice();
   post(
-    { type: 'decimated', id, positions, exactPositions, triangles, facts, decimatedFrom: from, timings: { decimateMs } },
+    { type: 'decimated', id, positions, exactPositions, triangles, facts, decimatedFrom: from, refined, timings: { decimateMs } },
     transferables(positions, exactPositions, triangles),
   );
 }
@@ -431,8 +443,10 @@ async function decimate(request: DecimateRequest): Promise<void> {
  */
 function write(request: WriteRequest): void {
   const last = current?.lastSkeleton;
-  if (!last) throw new UserError('core', 'There is no skeleton to save: compute one first.');
-  const { skeleton, options } = last;
+  if (!last || !current) throw new UserError('core', 'There is no skeleton to save: compute one first.');
+  // A file is for the mesh as opened, like the CLI's: vertexToNode over its vertices, not the refined mesh's.
+  const skeleton = skeletonForInput(last.skeleton, current.refined);
+  const { options } = last;
   const text =
     request.what === 'separators-obj'
       ? writeLoopsObj(

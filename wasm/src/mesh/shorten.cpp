@@ -22,6 +22,9 @@ struct Patch {
   std::unique_ptr<EdgeLengthGeometry> geometry;
   HalfedgeData<Halfedge> toIntrinsic;  // patch halfedge -> intrinsic halfedge (interior halfedges)
   HalfedgeData<Halfedge> fromIntrinsic; // intrinsic halfedge -> patch halfedge (selected faces only)
+  // Edge lengths are divided by their mean: FlipOut's angle and length tolerances are absolute, and a
+  // mesh at 1e30 (or 1e-30) would make it flip forever.
+  double scale = 1;
 };
 
 // Builds the patch of the selected faces. A vertex whose selected faces form several fans (a bow-tie
@@ -97,6 +100,10 @@ Patch buildPatch(IntrinsicTriangulation& intrinsic, const std::vector<char>& sel
       }
     }
   }
+  double sum = 0;
+  for (Edge e : patch.mesh->edges()) sum += lengths[e];
+  if (sum > 0) patch.scale = sum / patch.mesh->nEdges();
+  for (Edge e : patch.mesh->edges()) lengths[e] /= patch.scale;
   patch.geometry = std::make_unique<EdgeLengthGeometry>(*patch.mesh, lengths);
   return patch;
 }
@@ -209,7 +216,7 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
     return result;
   }
   // One intrinsic edge may be the whole loop (e.g. a meridian of a torus as a self-edge): that is fine.
-  result.length = network.length();
+  result.length = network.length() * patch->scale;
 
   std::vector<std::vector<SurfacePoint>> polylines = network.getPathPolyline();
   std::vector<SurfacePoint>& onPatch = polylines.front();
@@ -219,6 +226,7 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
     onPatch.pop_back(); // closed: the last point repeats the first
   for (const SurfacePoint& p : onPatch) result.loop.push_back(intrinsic.equivalentPointOnInput(toIntrinsic(*patch, p)));
   result.areas = sideAreas(network, path);
+  for (double& a : result.areas) a *= patch->scale * patch->scale;
   return result;
 }
 

@@ -202,8 +202,12 @@ type MapScore =
   | { ok: true; evaluation: Figures; fromNeighbours: number; fromFallback: number; unmapped: number }
   | { ok: false; reason: string };
 
-/** Ground-truth leaves that are not tips: star8's node 0 is the top of the body, not an arm (../shared/data/synthetic/README.md). */
-const NOT_TIPS: Record<string, number[]> = { star8: [0], star8_coarse: [0] };
+/**
+ * Ground-truth leaves that are not tips (../shared/data/synthetic/README.md measures the tip gap "over
+ * the arms/twigs"): star8's node 0 is the top of the body, not an arm; tree's node 0 is the base of the
+ * trunk, its root, not a twig.
+ */
+const NOT_TIPS: Record<string, number[]> = { star8: [0], star8_coarse: [0], tree: [0], tree_coarse: [0] };
 
 /** The tips of the mesh's ground-truth skeleton `<stem>__GT.json` beside it, or null when it has none. */
 function groundTruthTips(meshFile: string): number[][] | null {

@@ -163,7 +163,7 @@ export const STAGES: readonly StageDef[] = [
     group: 'shape',
     section: 'Sec. 4.2.4',
     caption:
-      'Every vertex belongs to the packed loop nearest to it along the surface (a watershed from all loops at once), so each loop owns the region around it; one colour per region. Each region becomes a node of the skeleton.',
+      'Every vertex belongs to the packed loop nearest to it along the surface (a watershed from all loops at once), so each loop owns the region around it. Each region is then cut into bands of that distance, about a loop radius wide, and every connected piece of a band becomes a node: one colour per node. A long or tapering region gets a node every radius and a tip one of its own; a band that splits around a fork gives each prong its own; pieces cut by a region border join the last whole cross-section.',
     layers: ['sk-packed'],
     dimmed: ['sk-packed'],
     legend: [],
@@ -175,7 +175,7 @@ export const STAGES: readonly StageDef[] = [
     group: 'shape',
     section: 'Sec. 4.2.4',
     caption:
-      'One node per region, centred in its separator loop, drawn as a sphere sized by its radius (the tube that best fits the surface around it); edges join regions that touch, and where three or more regions meet a branch node joins them. The mesh is drawn see-through.',
+      'One node per band piece of a region (see Regions): on a loop’s own piece the loop’s centroid, elsewhere the centre of the piece’s middle cross-section, at a tip the centre of its end sphere. Nodes are about a radius apart, drawn as spheres a quarter of their radius (the tube that best fits the surface around them); edges join pieces that touch, and where three or more regions meet a branch node joins them. Bumps shorter than their branch’s radius stay in it. The mesh is drawn see-through.',
     layers: ['sk-edges', 'sk-nodes', 'sk-highlight', 'sk-region'],
     legend: [
       { layer: 'sk-nodes', label: 'node', color: COLORS.node },

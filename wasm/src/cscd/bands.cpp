@@ -299,11 +299,11 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
     for (uint32_t n : adj[hub]) radius[hub] = std::max(radius[hub], radius[n]);
 
   // Leaves that are no branches join their neighbours: a region too small to hold a strip of elements
-  // along its separator (the watershed gave its separator's elements to a neighbour); a leaf piece of
-  // less than half a band (the end of a tip, off its axis: its neighbour's slice is the last whole
-  // cross-section) or one that touches a piece other than its one neighbour (across a region border or
-  // a cut cycle); a leaf branch of band pieces that spans less than one band (no cross-section of its
-  // own) or does not reach more than its junction's radius beyond the junction's surface (a bump).
+  // along its separator (the watershed gave its separator's elements to a neighbour); a leaf piece that
+  // lies outside the shape (a few elements at the very end of a thin tip: its neighbour moves into the
+  // tip instead) or touches a piece other than its one neighbour (across a region border or a cut
+  // cycle); a leaf branch of band pieces that spans less than one band (no cross-section of its own) or
+  // does not reach more than its junction's radius beyond the junction's surface (a bump).
   auto touchesOther = [&](uint32_t node, uint32_t neighbour) {
     for (uint32_t p : piecesOf[node])
       for (const auto& [q, n] : contactsOf[p]) {
@@ -321,13 +321,9 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
         if (weightOf(leaf) < kIslandStrip * width[leaf] * spacing) changed = absorb(next, leaf) || changed;
         continue;
       }
-      double low = INFINITY, high = -INFINITY;
-      for (uint32_t p : piecesOf[leaf]) {
-        low = std::min(low, distance[pieces.list[p].nearest]);
-        high = std::max(high, distance[pieces.list[p].deepest]);
-      }
       const double bandWidth = width[pieces.list[piecesOf[leaf][0]].region];
-      if (touchesOther(leaf, next)) {
+      const bool outside = solid[pieces.list[piecesOf[leaf][0]].region] && !inside(position[leaf]);
+      if (outside || touchesOther(leaf, next)) {
         changed = absorb(next, leaf) || changed;
         continue;
       }
@@ -339,9 +335,7 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
         previous = at;
         at = onward;
       }
-      double reach = 0;
-      low = INFINITY;
-      high = -INFINITY;
+      double reach = 0, low = INFINITY, high = -INFINITY;
       for (uint32_t c : chain)
         for (uint32_t p : piecesOf[c])
           for (uint32_t v : pieces.list[p].elements) {
@@ -358,7 +352,7 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   // Leaves reach into their tips: to the centre of the sphere through the tip (the centroid of the
   // leaf's elements within a quarter band of the farthest from the separators, beyond the node: the
   // middle of a flat end, not its corner) and the node's slice, or one radius in from the tip when the
-  // slice is farther back than that; never back from where the slice put them.
+  // slice is farther back than that; never back from where the slice put them, never out of the shape.
   for (uint32_t leaf = 0; leaf < nodeCount; leaf++) {
     if (mergedInto[leaf] != kNone || isHub(leaf) || adj[leaf].size() != 1 || !(radius[leaf] > 0)) continue;
     const Vector3 at = position[leaf], axis = at - position[*adj[leaf].begin()];
@@ -380,10 +374,14 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
     const Vector3 toTip = sum / total - at;
     const double h = norm(toTip), rho = radius[leaf];
     const double tipRadius = h < rho ? (rho * rho + h * h) / (2 * h) : rho;
-    if (h - tipRadius < kTipMove * rho) continue;
-    const Vector3 centre = at + (h - tipRadius) / h * toTip;
-    if (solid[pieces.list[piecesOf[leaf][0]].region] && !inside(centre)) continue;
-    position[leaf] = centre;
+    // A move that would leave the shape is halved (a thin tip bends out of the straight line).
+    const bool solidLeaf = solid[pieces.list[piecesOf[leaf][0]].region];
+    for (double move = h - tipRadius; move >= kTipMove * rho; move /= 2) {
+      const Vector3 centre = at + move / h * toTip;
+      if (solidLeaf && !inside(centre)) continue;
+      position[leaf] = centre;
+      break;
+    }
   }
 
   // The refined graph, its nodes in their old order.

@@ -42,7 +42,7 @@ export interface SkeletonJson {
   radii: number[];
   edges: [number, number][];
   vertexToNode: number[];
-  /** The packed separators' loops, in the order of `packed` (separator i owns node i's region). */
+  /** The packed separators' loops, in the order of `packed`. */
   separators: Point[][];
   /** Per separator: false for an open path whose ends lie on the mesh boundary. */
   separatorsClosed: boolean[];

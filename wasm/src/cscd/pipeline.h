@@ -46,7 +46,7 @@ struct Skeleton {
   std::vector<uint32_t> vertexToNode; // per element of the shape: its region's node
   std::vector<Candidate> candidates;
   std::vector<Fate> fates;
-  std::vector<size_t> packed; // candidate indices; packed separator i owns node i
+  std::vector<size_t> packed; // candidate indices; packed separator i owns region i (its vertices nearest to it)
   size_t pruned = 0;
   std::vector<std::pair<std::string, double>> timings; // milliseconds per stage
 };

@@ -247,7 +247,7 @@ export class WholeShape {
     viewer.setLayer('sk-progress', null);
     this.progressLoops = null;
     const nodeCount = Math.floor(s.nodes.length / 3);
-    // The legend lists the regions (nodes that own vertices; branch nodes own none).
+    // The legend lists the band pieces (nodes that own vertices; branch nodes own none).
     const owned = new Set<number>();
     for (const node of s.vertexToNode) if (node < nodeCount) owned.add(node);
     this.regionColors = [...owned].sort((a, b) => a - b).map(regionColor);
@@ -284,17 +284,17 @@ export class WholeShape {
     surface.setTranslucent(key === 'skeleton');
   }
 
-  /** Legend entries a stage adds: one chip per region in the Regions stage. */
+  /** Legend entries a stage adds: one chip per band piece (a node's vertices) in the Regions stage. */
   legendExtras(key: StageKey): HTMLLIElement[] {
     if (key !== 'regions' || !this.result) return [];
     const li = document.createElement('li');
     li.className = 'region-chips';
-    li.append(`${this.regionColors.length} region${this.regionColors.length === 1 ? '' : 's'}`);
+    li.append(`${this.regionColors.length} band piece${this.regionColors.length === 1 ? '' : 's'}`);
     for (const [i, color] of this.regionColors.entries()) {
       const chip = document.createElement('span');
       chip.className = 'swatch';
       chip.style.background = color;
-      chip.title = `region ${i + 1}`;
+      chip.title = `band piece ${i + 1}`;
       li.append(chip);
     }
     return [li];

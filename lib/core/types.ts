@@ -157,7 +157,7 @@ export interface Skeleton {
   radii: Float64Array;
   /** Pairs of node indices. */
   edges: Uint32Array;
-  /** Skeleton node of every input vertex (the region it belongs to; branch nodes own no vertices). */
+  /** Skeleton node of every input vertex (the band piece of a region it lies in; branch nodes own no vertices). */
   vertexToNode: Uint32Array;
   /** Every candidate of stage 1: its source, loop, score and fate. */
   candidates: {

@@ -167,6 +167,7 @@ export class SkeletonPanel {
   /** The time of each whole-shape stage (worker wall time of stage 1, the core's times of stage 2). */
   static stageTimes(reply: SkeletonReply): Partial<Record<StageKey, number>> {
     const t = reply.skeleton.stats.timings;
-    return { separators: reply.timings.stage1Ms, packing: (t.prune ?? 0) + (t.pack ?? 0), regions: t.regions, skeleton: t.graph };
+    // Bands belong to both the Regions stage (the pieces) and the Skeleton stage (their nodes): counted with the graph.
+    return { separators: reply.timings.stage1Ms, packing: (t.prune ?? 0) + (t.pack ?? 0), regions: t.regions, skeleton: (t.graph ?? 0) + (t.bands ?? 0) };
   }
 }

@@ -190,24 +190,30 @@ std::vector<Vec2> CutLocusSolver::vertexGradients(const std::vector<Vec2>& faceG
 // its neighbours on the two sides point against each other.
 std::vector<double> CutLocusSolver::angleDeviations(const std::vector<Vec2>& vertexGradient,
                                                     const std::vector<double>& distance) const {
+  // Directions only: each gradient is normalised once (transport is a rotation), not once per ring it is in.
+  std::vector<Vec2> direction(nVertices, Vec2{0, 0});
+  std::vector<char> hasDirection(nVertices, 0);
+  for (size_t v = 0; v < nVertices; v++) {
+    const Vec2& g = vertexGradient[v];
+    double length = std::sqrt(g[0] * g[0] + g[1] * g[1]);
+    if (length > 0) {
+      direction[v] = {g[0] / length, g[1] / length};
+      hasDirection[v] = 1;
+    }
+  }
   std::vector<double> deviation(nVertices, std::numeric_limits<double>::quiet_NaN());
   std::vector<Vec2> ring;
   for (size_t v = 0; v < nVertices; v++) {
     if (!std::isfinite(distance[v])) continue;
     ring.clear();
-    auto add = [&](const Vec2& g) {
-      double length = std::hypot(g[0], g[1]);
-      if (length > 0) ring.push_back({g[0] / length, g[1] / length});
-    };
-    add(vertexGradient[v]);
+    if (hasDirection[v]) ring.push_back(direction[v]);
     for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++)
-      add(rotate(vertexGradient[neighbours[n].vertex], neighbours[n].transportToCenter));
+      if (hasDirection[neighbours[n].vertex]) ring.push_back(rotate(direction[neighbours[n].vertex], neighbours[n].transportToCenter));
     double smallestCosine = 1;
     for (size_t i = 0; i < ring.size(); i++)
       for (size_t j = i + 1; j < ring.size(); j++)
         smallestCosine = std::min(smallestCosine, ring[i][0] * ring[j][0] + ring[i][1] * ring[j][1]);
-    double largest = std::acos(std::max(-1.0, smallestCosine));
-    deviation[v] = largest;
+    deviation[v] = std::acos(std::max(-1.0, smallestCosine));
   }
   return deviation;
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <memory>
 #include <set>
+#include <stdexcept>
 #include <queue>
 
 using namespace geometrycentral;
@@ -25,6 +26,13 @@ struct Patch {
   // Edge lengths are divided by their mean: FlipOut's angle and length tolerances are absolute, and a
   // mesh at 1e30 (or 1e-30) would make it flip forever.
   double scale = 1;
+};
+
+// geometry-central keeps its constructor from halfedge arrays for its own copies.
+struct ArrayMesh : ManifoldSurfaceMesh {
+  ArrayMesh(const std::vector<size_t>& heNext, const std::vector<size_t>& heVertex, const std::vector<size_t>& heFace,
+            const std::vector<size_t>& vHalfedge, const std::vector<size_t>& fHalfedge, size_t nBoundaryLoops)
+      : ManifoldSurfaceMesh(heNext, heVertex, heFace, vHalfedge, fHalfedge, nBoundaryLoops) {}
 };
 
 // Builds the patch of the selected faces. A vertex whose selected faces form several fans (a bow-tie
@@ -54,51 +62,77 @@ Patch buildPatch(IntrinsicTriangulation& intrinsic, const std::vector<char>& sel
       fans.unite(uint32_t(corner(h.next())), uint32_t(corner(t)));
     }
 
-  std::vector<size_t> patchVertexOfFan(3 * faces.size(), SIZE_MAX);
+  // One patch vertex per fan, numbered in corner order.
+  const size_t nFaces = faces.size();
+  std::vector<size_t> cornerVertex(3 * nFaces), patchVertexOfFan(3 * nFaces, SIZE_MAX);
   size_t nPatchVertices = 0;
-  std::vector<std::vector<size_t>> polygons;
-  std::vector<std::array<Halfedge, 3>> faceHalfedges;
-  for (Face f : faces) {
-    std::vector<size_t> polygon;
-    std::array<Halfedge, 3> hs;
-    size_t k = 0;
-    for (Halfedge h : f.adjacentHalfedges()) {
-      size_t fan = fans.find(uint32_t(corner(h)));
-      if (patchVertexOfFan[fan] == SIZE_MAX) patchVertexOfFan[fan] = nPatchVertices++;
-      polygon.push_back(patchVertexOfFan[fan]);
-      hs[k++] = h;
-    }
-    polygons.push_back(polygon);
-    faceHalfedges.push_back(hs);
+  for (size_t c = 0; c < 3 * nFaces; c++) {
+    size_t fan = fans.find(uint32_t(c));
+    if (patchVertexOfFan[fan] == SIZE_MAX) patchVertexOfFan[fan] = nPatchVertices++;
+    cornerVertex[c] = patchVertexOfFan[fan];
   }
 
-  // Twins given explicitly: intrinsic triangulations can have several edges between the same two
-  // vertices, which a polygon list alone cannot express.
-  std::vector<std::vector<std::tuple<size_t, size_t>>> twins(faces.size());
-  for (size_t i = 0; i < faces.size(); i++)
-    for (const Halfedge& h : faceHalfedges[i]) {
-      Halfedge t = h.twin();
-      bool inside = t.isInterior() && slot[t.face()] != SIZE_MAX;
-      twins[i].emplace_back(inside ? slot[t.face()] : INVALID_IND, inside ? corner(t) % 3 : INVALID_IND);
+  // The halfedge arrays, numbered as ManifoldSurfaceMesh(polygons, twins) numbers them (face by face,
+  // a new edge when the twin is not made yet, then the boundary loops), built directly: that
+  // constructor's hash map of twins was most of the time spent on a patch. Twins come from the
+  // triangulation, which can have several edges between the same two vertices.
+  std::vector<std::array<Halfedge, 3>> faceHalfedges(nFaces);
+  std::vector<size_t> heNext, heVertex, heFace, vHalfedge(nPatchVertices, INVALID_IND), fHalfedge(nFaces, INVALID_IND);
+  std::vector<size_t> cornerHalfedge(3 * nFaces, INVALID_IND); // patch halfedge leaving each corner
+  for (size_t i = 0; i < nFaces; i++) {
+    size_t k = 0;
+    for (Halfedge h : faces[i].adjacentHalfedges()) faceHalfedges[i][k++] = h;
+    for (k = 0; k < 3; k++) {
+      const size_t tail = cornerVertex[3 * i + k], tip = cornerVertex[3 * i + (k + 1) % 3];
+      if (tail == tip) throw std::runtime_error("patch: a self-edge");
+      Halfedge t = faceHalfedges[i][k].twin();
+      size_t twin = t.isInterior() && slot[t.face()] != SIZE_MAX ? cornerHalfedge[corner(t)] : INVALID_IND;
+      size_t he;
+      if (twin == INVALID_IND) {
+        he = heNext.size();
+        heNext.insert(heNext.end(), {INVALID_IND, INVALID_IND});
+        heVertex.insert(heVertex.end(), {tail, tip});
+        heFace.insert(heFace.end(), {INVALID_IND, INVALID_IND});
+      } else {
+        he = twin ^ 1;
+      }
+      cornerHalfedge[3 * i + k] = he;
+      heFace[he] = i;
+      vHalfedge[tail] = he;
+      if (k == 0) fHalfedge[i] = he;
+      else heNext[cornerHalfedge[3 * i + k - 1]] = he;
     }
+    heNext[cornerHalfedge[3 * i + 2]] = cornerHalfedge[3 * i];
+  }
+  // Boundary loops, walked as the constructor walks them.
+  size_t nBoundaryLoops = 0;
+  for (size_t first = 0; first < heNext.size(); first++) {
+    if (heFace[first] != INVALID_IND) continue;
+    const size_t loop = nFaces + nBoundaryLoops++;
+    fHalfedge.push_back(first);
+    size_t current = first, steps = 0;
+    do {
+      heFace[current] = loop;
+      vHalfedge[heVertex[current ^ 1]] = current ^ 1;
+      size_t previous = current;
+      current = heNext[current ^ 1] ^ 1;
+      while (heFace[current] != INVALID_IND && current != first) current = heNext[current] ^ 1;
+      heNext[current] = previous;
+      if (++steps > heNext.size()) throw std::runtime_error("patch: a boundary that does not close");
+    } while (current != first);
+  }
 
   Patch patch;
-  patch.mesh = std::make_unique<ManifoldSurfaceMesh>(polygons, twins);
+  patch.mesh = std::make_unique<ArrayMesh>(heNext, heVertex, heFace, vHalfedge, fHalfedge, nBoundaryLoops);
   patch.toIntrinsic = HalfedgeData<Halfedge>(*patch.mesh);
   patch.fromIntrinsic = HalfedgeData<Halfedge>(mesh);
   EdgeData<double> lengths(*patch.mesh, 0.);
   intrinsic.requireEdgeLengths();
-  for (size_t i = 0; i < faces.size(); i++) {
-    // Match halfedges by their tail's patch vertex: the three corners of a face are distinct fans.
-    for (Halfedge ph : patch.mesh->face(i).adjacentHalfedges()) {
-      for (size_t k = 0; k < 3; k++) {
-        if (polygons[i][k] != ph.tailVertex().getIndex()) continue;
-        Halfedge ih = faceHalfedges[i][k];
-        patch.toIntrinsic[ph] = ih;
-        patch.fromIntrinsic[ih] = ph;
-        lengths[ph.edge()] = intrinsic.edgeLengths[ih.edge()];
-      }
-    }
+  for (size_t c = 0; c < 3 * nFaces; c++) {
+    Halfedge ph = patch.mesh->halfedge(cornerHalfedge[c]), ih = faceHalfedges[c / 3][c % 3];
+    patch.toIntrinsic[ph] = ih;
+    patch.fromIntrinsic[ih] = ph;
+    lengths[ph.edge()] = intrinsic.edgeLengths[ih.edge()];
   }
   double sum = 0;
   for (Edge e : patch.mesh->edges()) sum += lengths[e];

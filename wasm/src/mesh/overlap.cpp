@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <tuple>
 #include <unordered_map>
 
@@ -69,22 +68,25 @@ std::vector<std::vector<size_t>> overlappingLoops(const std::vector<std::vector<
             grid[{x, y, z}].push_back({l, i});
     }
 
-  std::vector<std::set<size_t>> found(loops.size());
+  // Overlapping pairs as a bit matrix: many loops crowd the same cells (every source on a tube finds
+  // about the same loop), and the test that skips known pairs runs for every pair of their segments.
+  const size_t n = loops.size();
+  std::vector<bool> found(n * n, false);
   const double tolerance2 = tolerance * tolerance;
   for (const auto& [key, segments] : grid)
     for (size_t i = 0; i < segments.size(); i++)
       for (size_t j = i + 1; j < segments.size(); j++) {
         const Segment &s = segments[i], &t = segments[j];
-        if (s.loop == t.loop || found[s.loop].count(t.loop)) continue;
+        if (s.loop == t.loop || found[s.loop * n + t.loop]) continue;
         const auto &ls = loops[s.loop], &lt = loops[t.loop];
         if (segmentDistance2(ls[s.index], ls[(s.index + 1) % ls.size()], lt[t.index], lt[(t.index + 1) % lt.size()]) <=
-            tolerance2) {
-          found[s.loop].insert(t.loop);
-          found[t.loop].insert(s.loop);
-        }
+            tolerance2)
+          found[s.loop * n + t.loop] = found[t.loop * n + s.loop] = true;
       }
-  std::vector<std::vector<size_t>> overlaps(loops.size());
-  for (size_t l = 0; l < loops.size(); l++) overlaps[l].assign(found[l].begin(), found[l].end());
+  std::vector<std::vector<size_t>> overlaps(n);
+  for (size_t a = 0; a < n; a++)
+    for (size_t b = 0; b < n; b++)
+      if (found[a * n + b]) overlaps[a].push_back(b);
   return overlaps;
 }
 

@@ -33,13 +33,20 @@ Vector3 pathNormal(const std::vector<Vector3>& path, Vector3 surfaceNormal) {
   return length > 0 ? across / length : Vector3{0, 0, 0};
 }
 
-double windingNumber(VertexPositionGeometry& geometry, Vector3 point) {
-  double solidAngle = 0;
+TriangleSoup triangleSoup(VertexPositionGeometry& geometry) {
+  TriangleSoup triangles;
   for (Face f : geometry.mesh.faces()) {
     Halfedge h = f.halfedge();
-    Vector3 a = geometry.vertexPositions[h.vertex()] - point;
-    Vector3 b = geometry.vertexPositions[h.next().vertex()] - point;
-    Vector3 c = geometry.vertexPositions[h.next().next().vertex()] - point;
+    triangles.push_back({geometry.vertexPositions[h.vertex()], geometry.vertexPositions[h.next().vertex()],
+                         geometry.vertexPositions[h.next().next().vertex()]});
+  }
+  return triangles;
+}
+
+double windingNumber(const TriangleSoup& triangles, Vector3 point) {
+  double solidAngle = 0;
+  for (const auto& corners : triangles) {
+    Vector3 a = corners[0] - point, b = corners[1] - point, c = corners[2] - point;
     double la = norm(a), lb = norm(b), lc = norm(c);
     // Van Oosterom & Strackee: tan(omega / 2) = det[a b c] / (|a||b||c| + (a.b)|c| + (b.c)|a| + (c.a)|b|)
     double numerator = dot(a, cross(b, c));

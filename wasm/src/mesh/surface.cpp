@@ -36,4 +36,9 @@ const CutLocusSolver& Surface::cutLocusSolver() {
   return *cutLocus;
 }
 
+const TriangleSoup& Surface::triangles() {
+  if (!soup) soup = triangleSoup(*inputGeometry);
+  return *soup;
+}
+
 } // namespace cscd

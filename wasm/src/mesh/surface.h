@@ -2,6 +2,7 @@
 
 #include "mesh/cut_locus.h"
 #include "mesh/geodesics.h"
+#include "mesh/measures.h"
 #include "mesh/mesh_check.h"
 
 #include "geometrycentral/surface/signpost_intrinsic_triangulation.h"
@@ -9,6 +10,7 @@
 #include "geometrycentral/surface/vertex_position_geometry.h"
 
 #include <memory>
+#include <optional>
 
 namespace cscd {
 
@@ -33,6 +35,8 @@ public:
   const std::vector<std::vector<size_t>>& boundaryLoops() const { return boundary; }
   // Per-mesh data of the cut-locus detector, built on first use (not every caller needs it).
   const CutLocusSolver& cutLocusSolver();
+  // The input triangles for winding numbers (mesh/measures.h), built on first use.
+  const TriangleSoup& triangles();
 
 private:
   MeshCheck check;
@@ -41,6 +45,7 @@ private:
   std::unique_ptr<geometrycentral::surface::SignpostIntrinsicTriangulation> intrinsicTriangulation;
   std::unique_ptr<Geodesics> geodesicSolver;
   std::unique_ptr<CutLocusSolver> cutLocus;
+  std::optional<TriangleSoup> soup;
   std::vector<std::vector<size_t>> boundary;
 };
 

@@ -189,7 +189,10 @@ std::vector<Vec2> CutLocusSolver::vertexGradients(const std::vector<Vec2>& faceG
 // vertex's frame: a vertex right on the ridge has an averaged (meaningless) gradient of its own, but
 // its neighbours on the two sides point against each other.
 std::vector<double> CutLocusSolver::angleDeviations(const std::vector<Vec2>& vertexGradient,
-                                                    const std::vector<double>& distance) const {
+                                                    const std::vector<double>& distance,
+                                                    const CutLocusOptions& options) const {
+  // Above this cosine the angle is below the threshold by far more than rounding: acos is not needed.
+  const double clearlyBelow = std::cos(options.angleThreshold) + 1e-9;
   // Directions only: each gradient is normalised once (transport is a rotation), not once per ring it is in.
   std::vector<Vec2> direction(nVertices, Vec2{0, 0});
   std::vector<char> hasDirection(nVertices, 0);
@@ -213,7 +216,7 @@ std::vector<double> CutLocusSolver::angleDeviations(const std::vector<Vec2>& ver
     for (size_t i = 0; i < ring.size(); i++)
       for (size_t j = i + 1; j < ring.size(); j++)
         smallestCosine = std::min(smallestCosine, ring[i][0] * ring[j][0] + ring[i][1] * ring[j][1]);
-    deviation[v] = std::acos(std::max(-1.0, smallestCosine));
+    if (options.everyAngle || smallestCosine <= clearlyBelow) deviation[v] = std::acos(std::max(-1.0, smallestCosine));
   }
   return deviation;
 }
@@ -393,7 +396,7 @@ CutLocus CutLocusSolver::compute(const std::vector<double>& distance, size_t sou
     if (vertexComponent[v] != component || std::isnan(dist[v])) dist[v] = INFINITY;
 
   CutLocus result;
-  result.angleDeviation = angleDeviations(vertexGradients(faceGradients(dist), dist), dist);
+  result.angleDeviation = angleDeviations(vertexGradients(faceGradients(dist), dist), dist, options);
   result.laplacian = distanceLaplacian(dist);
   result.root = source;
   for (size_t v = 0; v < nVertices; v++)

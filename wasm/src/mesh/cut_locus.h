@@ -24,6 +24,10 @@ struct CutLocusOptions {
   CutLocusRestriction restriction = CutLocusRestriction::Pruning;
   // Leaf branches with fewer edges than this are removed (0 keeps everything).
   int pruneDepth = 3;
+  // Every vertex's angle deviation, for teaching views. Without it, only vertices whose gradients turn
+  // by nearly the threshold or more get theirs (NaN elsewhere): the only ones the thresholds look at,
+  // and an arc cosine per vertex is a tenth of a skeleton's cut-locus time.
+  bool everyAngle = true;
 };
 
 // The cut locus of one source as a graph on mesh vertices.
@@ -31,7 +35,7 @@ struct CutLocus {
   std::vector<size_t> vertices;             // graph nodes, as input (== intrinsic) vertex indices
   std::vector<std::array<size_t, 2>> edges; // indices into `vertices`, each edge an intrinsic edge
   // Per-vertex fields over the whole mesh, kept for teaching views (NaN outside the source's component).
-  std::vector<double> angleDeviation; // radians
+  std::vector<double> angleDeviation; // radians (see CutLocusOptions::everyAngle)
   std::vector<double> laplacian;      // h * Laplacian of the distance, negative on ridges
   size_t root = 0;                    // the vertex farthest from the source
 
@@ -71,7 +75,8 @@ private:
 
   std::vector<Vec2> faceGradients(const std::vector<double>& distance) const;
   std::vector<Vec2> vertexGradients(const std::vector<Vec2>& faceGradient, const std::vector<double>& distance) const;
-  std::vector<double> angleDeviations(const std::vector<Vec2>& vertexGradient, const std::vector<double>& distance) const;
+  std::vector<double> angleDeviations(const std::vector<Vec2>& vertexGradient, const std::vector<double>& distance,
+                                      const CutLocusOptions& options) const;
   std::vector<double> distanceLaplacian(const std::vector<double>& distance) const;
   // Trees are stored as the edge to the parent of every vertex (NONE at the root and off the component);
   // up() is the parent vertex (or NONE).

@@ -18,7 +18,7 @@ MeshRealization::MeshRealization(Surface& surface_, const Options& options_)
     : surface(surface_), options(options_), sampler(surface_, options_.seed) {}
 
 Candidate MeshRealization::separator(size_t source) {
-  SeparatorResult result = computeSeparator(surface, source, options);
+  SeparatorResult result = computeSeparator(surface, source, options, /*everyAngle=*/false);
   Candidate candidate;
   candidate.source = source;
   candidate.found = result.status == "ok";

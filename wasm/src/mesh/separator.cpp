@@ -134,7 +134,7 @@ const char* loopThrough(Surface& surface, size_t source, const Extremity& extrem
 
 } // namespace
 
-SeparatorResult computeSeparator(Surface& surface, size_t source, const Options& options) {
+SeparatorResult computeSeparator(Surface& surface, size_t source, const Options& options, bool everyAngle) {
   SeparatorResult result;
   result.source = source;
   StageClock clock(result.timings);
@@ -147,6 +147,7 @@ SeparatorResult computeSeparator(Surface& surface, size_t source, const Options&
   cutLocusOptions.angleThreshold = options.angleThreshold;
   cutLocusOptions.laplacianThreshold = options.laplacianThreshold;
   cutLocusOptions.pruneDepth = options.pruneDepth;
+  cutLocusOptions.everyAngle = everyAngle;
   result.cutLocus = cutLocusSolver.compute(result.distance, source, cutLocusOptions);
   clock.lap("cutLocus");
 

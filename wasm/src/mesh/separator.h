@@ -45,6 +45,7 @@ struct SeparatorResult {
 
 // Alg. 2 of the paper: distance -> cut locus -> target -> two traced paths -> shortened loop -> measures.
 // Reads only per-mesh data of the surface, so sources can be processed in any order or batch.
-SeparatorResult computeSeparator(Surface& surface, size_t source, const Options& options);
+// everyAngle: the cut locus's angle field complete (teaching views) or only where its threshold looks.
+SeparatorResult computeSeparator(Surface& surface, size_t source, const Options& options, bool everyAngle = true);
 
 } // namespace cscd

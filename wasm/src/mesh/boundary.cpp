@@ -1,6 +1,5 @@
 #include "mesh/boundary.h"
 
-#include "mesh/measures.h"
 #include "mesh/target.h"
 
 #include <algorithm>
@@ -98,10 +97,10 @@ std::vector<BoundaryPair> opposedExtremities(const std::vector<BoundaryExtremity
   return pairs;
 }
 
-bool sheetAround(VertexPositionGeometry& geometry, const TriangleSoup& triangles, size_t vertex, double offset) {
+bool sheetAround(VertexPositionGeometry& geometry, const WindingNumber& winding, size_t vertex, double offset) {
   geometry.requireVertexNormals();
   const Vector3 p = geometry.vertexPositions[vertex], n = geometry.vertexNormals[vertex];
-  return std::abs(windingNumber(triangles, p + offset * n) + windingNumber(triangles, p - offset * n)) < 0.5;
+  return std::abs(winding(p + offset * n) + winding(p - offset * n)) < 0.5;
 }
 
 } // namespace cscd

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "cscd/options.h"
-#include "mesh/measures.h"
+#include "mesh/winding.h"
 
 #include "geometrycentral/surface/manifold_surface_mesh.h"
 #include "geometrycentral/surface/vertex_position_geometry.h"
@@ -62,7 +62,7 @@ std::vector<BoundaryPair> opposedExtremities(const std::vector<BoundaryExtremity
 // number jumps by one across any surface; beside the wall of a solid (closed, or with small holes) it
 // goes from about 0 outside to about 1 inside, beside a sheet from about -1/2 to 1/2. It is taken at
 // `offset` along the vertex normal on either side; a sum below 1/2 is a sheet.
-bool sheetAround(geometrycentral::surface::VertexPositionGeometry& geometry, const TriangleSoup& triangles, size_t vertex,
+bool sheetAround(geometrycentral::surface::VertexPositionGeometry& geometry, const WindingNumber& winding, size_t vertex,
                  double offset);
 
 } // namespace cscd

@@ -19,15 +19,6 @@ geometrycentral::Vector3 loopNormal(const std::vector<geometrycentral::Vector3>&
 geometrycentral::Vector3 pathNormal(const std::vector<geometrycentral::Vector3>& path,
                                     geometrycentral::Vector3 surfaceNormal);
 
-// The mesh's triangles as their corners' positions, in face order: a run asks for thousands of winding
-// numbers, each a pass over every triangle, and flat corners make that pass several times cheaper.
-using TriangleSoup = std::vector<std::array<geometrycentral::Vector3, 3>>;
-TriangleSoup triangleSoup(geometrycentral::surface::VertexPositionGeometry& geometry);
-
-// Generalised winding number of the mesh around a point (1 inside a closed outward-oriented mesh,
-// 0 outside; fractional near holes), by summing the signed solid angles of the triangles.
-double windingNumber(const TriangleSoup& triangles, geometrycentral::Vector3 point);
-
 // The separator score of paper Sec. 4.2.1: s = A1 / (A2 * length), A1 <= A2 the areas of the two sides.
 double separatorScore(const std::array<double, 2>& areas, double length);
 

@@ -63,7 +63,7 @@ geometrycentral::Vector3 MeshRealization::separatorNormal(size_t candidate) cons
   return pathNormal(loops[candidate], surfaceNormal);
 }
 
-bool MeshRealization::inside(const geometrycentral::Vector3& p) const { return windingNumber(surface.triangles(), p) > 0.5; }
+bool MeshRealization::inside(const geometrycentral::Vector3& p) const { return surface.winding()(p) > 0.5; }
 
 const Samples& MeshRealization::samples() {
   if (!vertexSamples.positions.empty()) return vertexSamples;

@@ -79,7 +79,7 @@ std::vector<Extremity> rankExtremities(Surface& surface, size_t source, const Op
   // The winding-number test costs a pass over the faces: only made when two loops have extremities.
   bool severalLoops = std::any_of(extremities.begin(), extremities.end(),
                                   [&](const BoundaryExtremity& e) { return e.loop != extremities.front().loop; });
-  bool acrossLoops = severalLoops && sheetAround(geometry, surface.triangles(), source, kExtremityWindow * surface.facts().meanEdgeLength);
+  bool acrossLoops = severalLoops && sheetAround(geometry, surface.winding(), source, kExtremityWindow * surface.facts().meanEdgeLength);
   for (const BoundaryPair& pair :
        opposedExtremities(extremities, geometry, result.distance, source, options.target, acrossLoops))
     ranked.push_back({pair.key, pair.ends[0], pair.ends});
@@ -181,7 +181,7 @@ SeparatorResult computeSeparator(Surface& surface, size_t source, const Options&
   result.score = separatorScore(result.areas, result.length);
   // The test drops loops that wind around the outside of a concave bend. A path ending on the boundary
   // lies across a sheet, which has no inside (its winding number is about 0 everywhere): it passes.
-  result.centroidInside = !result.closed || windingNumber(surface.triangles(), loopCentroid(result.loop, true)) > 0.5;
+  result.centroidInside = !result.closed || surface.winding()(loopCentroid(result.loop, true)) > 0.5;
   clock.lap("measures");
   return result;
 }

@@ -36,9 +36,9 @@ const CutLocusSolver& Surface::cutLocusSolver() {
   return *cutLocus;
 }
 
-const TriangleSoup& Surface::triangles() {
-  if (!soup) soup = triangleSoup(*inputGeometry);
-  return *soup;
+const WindingNumber& Surface::winding() {
+  if (!windingNumber) windingNumber = std::make_unique<WindingNumber>(*inputGeometry);
+  return *windingNumber;
 }
 
 } // namespace cscd

@@ -2,15 +2,14 @@
 
 #include "mesh/cut_locus.h"
 #include "mesh/geodesics.h"
-#include "mesh/measures.h"
 #include "mesh/mesh_check.h"
+#include "mesh/winding.h"
 
 #include "geometrycentral/surface/signpost_intrinsic_triangulation.h"
 #include "geometrycentral/surface/manifold_surface_mesh.h"
 #include "geometrycentral/surface/vertex_position_geometry.h"
 
 #include <memory>
-#include <optional>
 
 namespace cscd {
 
@@ -35,8 +34,8 @@ public:
   const std::vector<std::vector<size_t>>& boundaryLoops() const { return boundary; }
   // Per-mesh data of the cut-locus detector, built on first use (not every caller needs it).
   const CutLocusSolver& cutLocusSolver();
-  // The input triangles for winding numbers (mesh/measures.h), built on first use.
-  const TriangleSoup& triangles();
+  // Winding numbers of the input mesh (mesh/winding.h), built on first use.
+  const WindingNumber& winding();
 
 private:
   MeshCheck check;
@@ -45,7 +44,7 @@ private:
   std::unique_ptr<geometrycentral::surface::SignpostIntrinsicTriangulation> intrinsicTriangulation;
   std::unique_ptr<Geodesics> geodesicSolver;
   std::unique_ptr<CutLocusSolver> cutLocus;
-  std::optional<TriangleSoup> soup;
+  std::unique_ptr<WindingNumber> windingNumber;
   std::vector<std::vector<size_t>> boundary;
 };
 

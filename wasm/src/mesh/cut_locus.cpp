@@ -355,7 +355,10 @@ std::vector<size_t> CutLocusSolver::linkingTree(const std::vector<size_t>& ridge
 std::vector<size_t> CutLocusSolver::homologyGenerators(const std::vector<size_t>& parent,
                                                        const std::vector<double>& distance, size_t source) const {
   // By edge, not by endpoints: intrinsic triangulations can have two edges between the same vertices.
-  auto isTreeEdge = [&](size_t e) { return parent[edgeVertices[e][0]] == e || parent[edgeVertices[e][1]] == e; };
+  std::vector<char> treeEdge(edgeVertices.size(), 0);
+  for (size_t v = 0; v < nVertices; v++)
+    if (parent[v] != NONE) treeEdge[parent[v]] = 1;
+  auto isTreeEdge = [&](size_t e) { return treeEdge[e] != 0; };
   auto faceKey = [&](size_t f) {
     const auto& fv = faceVertices[f];
     return distance[fv[0]] + distance[fv[1]] + distance[fv[2]];

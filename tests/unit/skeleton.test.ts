@@ -1,5 +1,5 @@
-// The whole CSCD-M pipeline (stage 1 over many sources, then stage 2) on the shared meshes: issue 4.
-// The topology check on every closed shared mesh is in skeleton-topology-1/2.test.ts.
+// The whole CSCD-M pipeline (stage 1 over many sources, then stage 2) on the shared meshes.
+// The topology check: skeleton-topology.test.ts (a representative part) and `npm run check:corpus` (every closed shared mesh).
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core, type MeshArrays, type Skeleton } from '../../lib/core/node.ts';
 import { extremities, readMesh, torus } from './support/meshes.ts';

@@ -1,8 +1,8 @@
 import { writeFile } from 'node:fs/promises';
-import { defaultOptions, optionRanges } from '../../lib/core/options.ts';
+import { defaultOptions, OPTIONS, optionProblem, optionText, parseOptionText, type OptionSpec } from '../../lib/core/options.ts';
 import { random } from '../../lib/core/random.ts';
 import type { MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
-import { UsageError, openSolver, readMesh, type Command, type OptionSpec, type OptionValues } from '../command.ts';
+import { UsageError, openSolver, readMesh, type Command, type OptionSpec as CliOptionSpec, type OptionValues } from '../command.ts';
 
 export type Point = [number, number, number];
 
@@ -33,133 +33,44 @@ export interface SeparatorJson {
   refined: Refinement | null;
 }
 
-/** Every value of Options['target'] (the Record makes the compiler check that none is missing). */
-const TARGETS: Record<Options['target'], string> = {
-  euclid: 'in space',
-  geodesic: 'along the surface',
-};
+/** The flag of an option: a switch that is on by default is turned off by --no-<flag>. */
+function flagOf(spec: OptionSpec): string {
+  return spec.kind === 'switch' && spec.default ? `no-${spec.flag}` : spec.flag;
+}
 
-interface OptionFlag<K extends keyof Options> {
-  /** The kebab-case of the field name; a boolean that is on by default is switched off by --no-NAME. */
-  flag: string;
-  /** Only the pipeline (stage 2) uses the option: `cscd separator` does not take its flag. */
-  pipelineOnly?: true;
-  spec: OptionSpec;
-  parse(value: string | boolean, flag: string): Options[K];
+function flagSpec(spec: OptionSpec): CliOptionSpec {
+  if (spec.kind === 'switch') return { type: 'boolean', description: spec.default ? `do not ${spec.help}` : spec.help };
+  const value = spec.kind === 'choice' ? Object.keys(spec.choices).join('|') : spec.placeholder;
+  return { type: 'string', value, description: `${spec.help} (default ${optionText(spec.default)})` };
+}
+
+/** An option's value from its flag; a usage error names the flag and what it accepts. */
+function parseFlag(spec: OptionSpec, given: string | boolean, flag: string): Options[keyof Options] {
+  if (spec.kind === 'switch') return spec.default ? !given : Boolean(given);
+  const text = String(given);
+  const parsed = parseOptionText(spec, text);
+  if (parsed !== null) return parsed;
+  const notANumber = spec.kind === 'number' && !/^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(text);
+  throw new UsageError(`--${flag} ${notANumber ? 'must be a number' : optionProblem(spec, NaN)}, got '${text}'`);
 }
 
 /**
- * The CLI flag of every field of Options (the mapped type makes the compiler check that none is missing).
- * Ranges are those the core accepts (`optionRanges`), so that a value out of range is a usage error
- * here rather than a core error.
+ * The option flags as parseArgs specs (lib/core/options.ts), e.g. for scripts that take the same
+ * options as the command; with `pipeline: false`, only those of `cscd separator`.
  */
-const OPTION_FLAGS: { [K in keyof Options]: OptionFlag<K> } = {
-  target: {
-    flag: 'target',
-    spec: { type: 'string', value: Object.keys(TARGETS).join('|'), description: `target: the cut-locus point nearest the source ${describeTargets()} (default ${defaultOptions.target})` },
-    parse(value, flag) {
-      if (typeof value === 'string' && Object.hasOwn(TARGETS, value)) return value as Options['target'];
-      throw new UsageError(`--${flag} must be one of ${Object.keys(TARGETS).join(', ')}, got '${String(value)}'`);
-    },
-  },
-  sphere: {
-    flag: 'no-sphere',
-    spec: { type: 'boolean', description: 'do not keep the shortened loop inside a sphere around the source' },
-    parse: (value) => !value,
-  },
-  seed: {
-    flag: 'seed',
-    spec: { type: 'string', value: 'S', description: `seed of every random choice: the sources drawn (0 to 2^32-1, default ${defaultOptions.seed})` },
-    parse: (value, flag) => parseInteger(value, flag, optionRanges.seed[1]),
-  },
-  angleThreshold: {
-    flag: 'angle-threshold',
-    spec: { type: 'string', value: 'X', description: `cut locus: minimum turn of the distance gradient at a ridge, radians in [0, pi] (default ${defaultOptions.angleThreshold})` },
-    parse(value, flag) {
-      const angle = parseNumber(value, flag);
-      const [low, high] = optionRanges.angleThreshold;
-      if (angle < low || angle > high) throw new UsageError(`--${flag} must be an angle in radians from 0 to pi, got '${String(value)}'`);
-      return angle;
-    },
-  },
-  laplacianThreshold: {
-    flag: 'laplacian-threshold',
-    spec: { type: 'string', value: 'X', description: `cut locus: minimum ridge sharpness, scale-free, >= 0 (default ${defaultOptions.laplacianThreshold})` },
-    parse(value, flag) {
-      const threshold = parseNumber(value, flag);
-      const [low, high] = optionRanges.laplacianThreshold;
-      if (threshold < low || threshold > high) throw new UsageError(`--${flag} must be a number from ${low} to ${high}, got '${String(value)}'`);
-      return threshold;
-    },
-  },
-  pruneDepth: {
-    flag: 'prune-depth',
-    spec: { type: 'string', value: 'N', description: `cut locus: prune leaf branches with fewer edges than N (default ${defaultOptions.pruneDepth})` },
-    parse: (value, flag) => parseInteger(value, flag, optionRanges.pruneDepth[1]),
-  },
-  n: {
-    flag: 'n',
-    pipelineOnly: true,
-    spec: { type: 'string', value: 'N|auto', description: `number of sources (separators tried), or auto: draw sources until new separators stop adding coverage (default ${defaultOptions.n})` },
-    parse(value, flag) {
-      if (value === 'auto') return 'auto';
-      const [low, high] = optionRanges.n;
-      const text = String(value);
-      const n = /^\d+$/.test(text) ? Number(text) : NaN;
-      if (!(n >= low && n <= high)) throw new UsageError(`--${flag} must be auto or an integer from ${low} to ${high}, got '${text}'`);
-      return n;
-    },
-  },
-  pruneLengthFactor: {
-    flag: 'prune-length-factor',
-    pipelineOnly: true,
-    spec: { type: 'string', value: 'X', description: `prune loops shorter than X mean edge lengths: they enclose no feature (default ${defaultOptions.pruneLengthFactor})` },
-    parse(value, flag) {
-      const factor = parseNumber(value, flag);
-      const [low, high] = optionRanges.pruneLengthFactor;
-      if (factor < low || factor > high) throw new UsageError(`--${flag} must be a number from ${low} to ${high}, got '${String(value)}'`);
-      return factor;
-    },
-  },
-};
-
-/**
- * The option flags as parseArgs specs, e.g. for scripts that take the same options as the command;
- * with `pipeline: false`, only those of stage 1 (what `cscd separator` takes).
- */
-export function optionFlagSpecs({ pipeline = true } = {}): Record<string, OptionSpec> {
-  const flags: OptionFlag<keyof Options>[] = Object.values(OPTION_FLAGS);
-  return Object.fromEntries(flags.filter((f) => pipeline || !f.pipelineOnly).map(({ flag, spec }) => [flag, spec]));
-}
-
-function describeTargets(): string {
-  return Object.entries(TARGETS).map(([name, text]) => `${text} (${name})`).join(' or ');
-}
-
-function parseNumber(value: string | boolean, flag: string): number {
-  const text = String(value);
-  if (!/^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(text) || !Number.isFinite(Number(text))) {
-    throw new UsageError(`--${flag} must be a number, got '${text}'`);
-  }
-  return Number(text);
-}
-
-function parseInteger(value: string | boolean, flag: string, max: number): number {
-  const text = String(value);
-  const number = /^\d+$/.test(text) ? Number(text) : NaN;
-  if (!(number <= max)) throw new UsageError(`--${flag} must be an integer from 0 to ${max}, got '${text}'`);
-  return number;
+export function optionFlagSpecs({ pipeline = true } = {}): Record<string, CliOptionSpec> {
+  return Object.fromEntries(OPTIONS.filter((o) => pipeline || o.commands === 'all').map((o) => [flagOf(o), flagSpec(o)]));
 }
 
 /** The full Options of a command line: defaults, overridden by the flags that were given. */
 export function optionsFromFlags(values: OptionValues): Options {
-  const options: Options = { ...defaultOptions };
-  const set = <K extends keyof Options>(key: K, { flag, parse }: OptionFlag<K>) => {
+  const options: Record<string, unknown> = { ...defaultOptions };
+  for (const spec of OPTIONS) {
+    const flag = flagOf(spec);
     const value = values[flag];
-    if (value !== undefined && !Array.isArray(value)) options[key] = parse(value, flag);
-  };
-  for (const key of Object.keys(OPTION_FLAGS) as (keyof Options)[]) set(key, OPTION_FLAGS[key] as OptionFlag<typeof key>);
-  return options;
+    if (value !== undefined && !Array.isArray(value)) options[spec.key] = parseFlag(spec, value, flag);
+  }
+  return options as unknown as Options;
 }
 
 /**

@@ -1,6 +1,6 @@
 // The CSCD core for TypeScript callers (CLI, worker, tests): a thin layer over the embind module that
-// turns its error strings into CoreError and frees WASM objects through dispose().
-import createCscdModule, { type CscdModule, type CscdModuleOptions, type PipelineHandle, type SurfaceHandle } from '../../build/wasm/cscd.js';
+// turns its failures into CoreError (of their kind) and frees WASM objects through dispose().
+import createCscdModule, { type CoreFailure, type CscdModule, type CscdModuleOptions, type PipelineHandle, type SurfaceHandle } from '../../build/wasm/cscd.js';
 import { refine, refinedPoint, refinementOf, skeletonForInput } from '../mesh/refine.ts';
 import {
   CoreError,
@@ -23,8 +23,10 @@ import {
 export * from './types.ts';
 export { defaultOptions } from './options.ts';
 
-/** Turns the core's error strings into CoreError; `unwrap(x)` returns x when it is not an error. */
-type Unwrap = <T>(result: T | string) => T;
+/** Turns the core's failures into CoreError; `unwrap(x)` returns x when it is not one. */
+type Unwrap = <T>(result: T | CoreFailure) => T;
+
+const isFailure = (x: unknown): x is CoreFailure => typeof x === 'object' && x !== null && 'coreError' in x;
 
 /** WebAssembly memory pages are 64 KiB. */
 const PAGE_BYTES = 65536;
@@ -32,17 +34,14 @@ const PAGE_BYTES = 65536;
 const CORE_MAXIMUM_MB = 4096;
 const CORE_INITIAL_MB = 64;
 
-/**
- * The core reports a failed allocation (std::bad_alloc) as a string starting "out of memory"; it gets
- * the limit that was hit and what to do about it.
- */
+/** A failed allocation (kind memory) gets the limit that was hit and what to do about it. */
 function unwrapper(memoryLimitMB: number): Unwrap {
-  return <T>(result: T | string): T => {
-    if (typeof result !== 'string') return result;
-    if (result.startsWith('out of memory') || result.includes('bad_alloc')) {
-      throw new CoreError(`out of memory: the mesh needs more than ${memoryLimitMB} MB; decimate it to fewer faces and try again`);
+  return <T>(result: T | CoreFailure): T => {
+    if (!isFailure(result)) return result;
+    if (result.coreError === 'memory') {
+      throw new CoreError(`out of memory: the mesh needs more than ${memoryLimitMB} MB; decimate it to fewer faces and try again`, 'memory');
     }
-    throw new CoreError(result);
+    throw new CoreError(result.message, result.coreError);
   };
 }
 
@@ -225,7 +224,11 @@ class WasmCore implements Core {
   ) {}
 
   inspect(mesh: MeshArrays): MeshFacts {
-    return this.unwrap(this.module.inspect(mesh.positions, mesh.triangles) as MeshFacts | string);
+    return this.unwrap(this.module.inspect(mesh.positions, mesh.triangles)) as MeshFacts;
+  }
+
+  optionLimits() {
+    return this.module.optionLimits();
   }
 
   evaluate(mesh: MeshArrays, skeleton: SkeletonInput): Evaluation {

@@ -1,23 +1,145 @@
+/**
+ * Every option, declared once: name, kind, default, accepted range, stage, CLI flag and help. The CLI
+ * flags (cli/commands/separator.ts), the parameter panel (web/src/ui/params.ts), the address-bar state
+ * (web/src/ui/url-state.ts) and the option tables of the README and docs/cli.md (`optionTable`, checked
+ * by tests/unit/options.test.ts) are derived from it; the core declares the same defaults and ranges in
+ * C++ (wasm/src/cscd/options.h), and the same test holds the two to each other through the bindings.
+ */
 import type { Options } from './types.ts';
 
-/** Defaults of every option (mirrors wasm/src/cscd/options.h; the tests check that they agree). */
-export const defaultOptions: Readonly<Options> = Object.freeze({
-  target: 'euclid',
-  sphere: true,
-  seed: 1,
-  angleThreshold: 1.75,
-  laplacianThreshold: 0.2,
-  pruneDepth: 3,
-  n: 'auto',
-  pruneLengthFactor: 3,
-});
+/** Auto mode of `n` (wasm/src/cscd/pipeline.h): sampling stops when this share of the surface is near
+ * a source or a separator, or when the last `window` sources added less than `minGain`; never past `max`. */
+export const AUTO_N = Object.freeze({ covered: 0.99, window: 20, minGain: 0.005, max: 400 });
 
-/** Accepted ranges of the numeric options; the core checks the same (toOptions in bindings.cpp). */
-export const optionRanges = Object.freeze({
-  seed: [0, 0xffffffff],
-  angleThreshold: [0, Math.PI],
-  laplacianThreshold: [0, 1e6],
-  pruneDepth: [0, 1000],
-  n: [1, 100000],
-  pruneLengthFactor: [0, 1000],
-} as const);
+/** The auto-N rule in words, for help texts and docs. */
+export const AUTO_N_RULE = `until ${AUTO_N.covered * 100}% of the surface is near a source or a separator, or ${AUTO_N.window} more sources add less than ${AUTO_N.minGain * 100}% (at most ${AUTO_N.max})`;
+
+interface Common<K extends keyof Options> {
+  key: K;
+  /** CLI flag, kebab-case of the key; a switch that is on by default is turned off by --no-<flag>. */
+  flag: string;
+  /** separator: stage 1, from one source (a change re-runs the source); skeleton: the whole shape only. */
+  stage: 'separator' | 'skeleton';
+  /** The CLI commands that take the flag: every one that runs stage 1, or `skeleton` only. */
+  commands: 'all' | 'skeleton';
+  default: Options[K];
+  /** One line: what it changes, in which unit. */
+  help: string;
+}
+export type OptionSpec =
+  | (Common<'target'> & { kind: 'choice'; /** each value with its label in the panel */ choices: Readonly<Record<Options['target'], string>> })
+  | (Common<'sphere'> & { kind: 'switch' })
+  | (Common<'seed' | 'pruneDepth'> & { kind: 'integer'; range: readonly [number, number]; placeholder: string })
+  | (Common<'angleThreshold' | 'laplacianThreshold' | 'pruneLengthFactor'> & {
+      kind: 'number';
+      range: readonly [number, number];
+      placeholder: string;
+      /** The panel's step; `slider` where the range is small and natural (an angle). */
+      step: number;
+      slider?: true;
+    })
+  | (Common<'n'> & { kind: 'count'; range: readonly [number, number]; placeholder: string });
+
+export const OPTIONS: readonly OptionSpec[] = Object.freeze([
+  {
+    key: 'target', flag: 'target', stage: 'separator', commands: 'all', kind: 'choice', default: 'euclid',
+    choices: { euclid: 'space', geodesic: 'surface' },
+    help: 'target: the cut-locus point nearest the source in space (euclid, the paper) or along the surface (geodesic)',
+  },
+  {
+    key: 'sphere', flag: 'sphere', stage: 'separator', commands: 'all', kind: 'switch', default: true,
+    help: 'keep the shortened loop inside a sphere around the source reaching the farthest point of the approximate loop (paper Sec. 4.1.6)',
+  },
+  {
+    key: 'seed', flag: 'seed', stage: 'skeleton', commands: 'all', kind: 'integer', default: 1, range: [0, 0xffffffff], placeholder: 'S',
+    help: 'seed of every random choice (the sources drawn); same seed, same skeleton',
+  },
+  {
+    key: 'angleThreshold', flag: 'angle-threshold', stage: 'separator', commands: 'all', kind: 'number', default: 1.75, range: [0, Math.PI],
+    placeholder: 'X', step: 0.01, slider: true,
+    help: 'cut locus: minimum turn of the distance gradient at a ridge, radians in [0, π]',
+  },
+  {
+    key: 'laplacianThreshold', flag: 'laplacian-threshold', stage: 'separator', commands: 'all', kind: 'number', default: 0.2, range: [0, 1e6],
+    placeholder: 'X', step: 0.01,
+    help: 'cut locus: minimum ridge sharpness, −(mean edge length)·(Laplacian of the distance), unitless',
+  },
+  {
+    key: 'pruneDepth', flag: 'prune-depth', stage: 'separator', commands: 'all', kind: 'integer', default: 3, range: [0, 1000], placeholder: 'N',
+    help: 'cut locus: leaf branches with fewer edges than this are pruned',
+  },
+  {
+    key: 'n', flag: 'n', stage: 'skeleton', commands: 'skeleton', kind: 'count', default: 'auto', range: [1, 100000], placeholder: 'N|auto',
+    help: `number of sources (separators tried), or auto: draw sources ${AUTO_N_RULE}`,
+  },
+  {
+    key: 'pruneLengthFactor', flag: 'prune-length-factor', stage: 'skeleton', commands: 'skeleton', kind: 'number', default: 3, range: [0, 1000],
+    placeholder: 'X', step: 0.5,
+    help: 'loops shorter than this many mean edge lengths enclose no feature and are pruned (paper Sec. 4.2.2)',
+  },
+] satisfies OptionSpec[]);
+
+/** The spec of one option. */
+export function optionSpec<K extends keyof Options>(key: K): Extract<OptionSpec, { key: K }> {
+  return OPTIONS.find((o) => o.key === key) as Extract<OptionSpec, { key: K }>;
+}
+
+/** Defaults of every option. */
+export const defaultOptions: Readonly<Options> = Object.freeze(
+  Object.fromEntries(OPTIONS.map((o) => [o.key, o.default])) as unknown as Options,
+);
+
+type NumericKey = Extract<OptionSpec, { range: readonly [number, number] }>['key'];
+/** Accepted ranges of the numeric options (the core checks the same, wasm/src/cscd/options.h). */
+export const optionRanges: Readonly<Record<NumericKey, readonly [number, number]>> = Object.freeze(
+  Object.fromEntries(OPTIONS.flatMap((o) => ('range' in o ? [[o.key, o.range]] : []))) as Record<NumericKey, readonly [number, number]>,
+);
+
+/** Why a value is not acceptable for an option (null when it is). */
+export function optionProblem(spec: OptionSpec, value: unknown): string | null {
+  switch (spec.kind) {
+    case 'choice':
+      return typeof value === 'string' && Object.hasOwn(spec.choices, value) ? null : `must be one of ${Object.keys(spec.choices).join(', ')}`;
+    case 'switch':
+      return typeof value === 'boolean' ? null : 'must be true or false';
+    case 'integer':
+    case 'count': {
+      if (spec.kind === 'count' && value === 'auto') return null;
+      const [lo, hi] = spec.range;
+      const ok = typeof value === 'number' && Number.isInteger(value) && value >= lo && value <= hi;
+      return ok ? null : `must be ${spec.kind === 'count' ? 'auto or ' : ''}an integer from ${lo} to ${hi}`;
+    }
+    case 'number': {
+      const [lo, hi] = spec.range;
+      return typeof value === 'number' && Number.isFinite(value) && value >= lo && value <= hi ? null : `must be a number from ${lo} to ${rangeText(hi)}`;
+    }
+  }
+}
+
+/** A value as text ('auto', true, 1.75); the same text parses back with `parseOptionText`. */
+export function optionText(value: Options[keyof Options]): string {
+  return String(value);
+}
+
+/** An option's value from text (a CLI argument, an address-bar parameter); null when it is not acceptable. */
+export function parseOptionText<K extends keyof Options>(spec: Extract<OptionSpec, { key: K }>, text: string): Options[K] | null {
+  const s = spec as OptionSpec;
+  let value: unknown = text;
+  if (s.kind === 'switch') value = text === 'true' ? true : text === 'false' ? false : null;
+  else if (s.kind === 'integer' || (s.kind === 'count' && text !== 'auto')) value = /^\d+$/.test(text) ? Number(text) : null;
+  else if (s.kind === 'number') value = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(text) ? Number(text) : null;
+  return optionProblem(s, value) === null ? (value as Options[K]) : null;
+}
+
+/** A range bound as people write it (π, 2^32 − 1). */
+function rangeText(x: number): string {
+  return x === Math.PI ? 'pi' : x === 0xffffffff ? '2^32-1' : String(x);
+}
+
+/** The option table of the README and docs/cli.md: flag, option, default, meaning. */
+export function optionTable(): string {
+  const flag = (o: OptionSpec) =>
+    o.kind === 'switch' ? `\`--no-${o.flag}\`` : o.kind === 'choice' ? `\`--${o.flag} ${Object.keys(o.choices).join('\\|')}\`` : `\`--${o.flag} ${o.placeholder.replace('|', '\\|')}\``;
+  const rows = OPTIONS.map((o) => `| ${flag(o)} | \`${o.key}\` | \`${optionText(o.default)}\` | ${o.stage === 'separator' ? 'stage 1' : 'whole shape'} | ${o.help.replaceAll('|', '\\|')} |`);
+  return ['| CLI flag | option | default | stage | meaning |', '|---|---|---|---|---|', ...rows].join('\n');
+}

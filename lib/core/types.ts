@@ -214,9 +214,9 @@ export interface Surface {
   readonly facts: MeshFacts;
   /** Geodesic distance (heat method) from one vertex to every vertex. */
   distanceFromVertex(vertex: number): Float64Array;
-  /** Exact polyhedral geodesic distance (MMP) from one vertex: slower, the reference for the heat method. */
+  /** Test-only: exact polyhedral geodesic distance (MMP) from one vertex, the reference the tests hold the heat method to. */
   exactDistanceFromVertex(vertex: number): Float64Array;
-  /** Geodesic distance from the nearest of a set of surface points to every vertex. */
+  /** Test-only: geodesic distance from the nearest of a set of surface points to every vertex (the solve regions and sampling use inside the core). */
   distanceFromPoints(points: SurfacePoint[]): Float64Array;
   /** Stage 1 for one source vertex; per-mesh data is reused, so repeated calls are cheap. */
   separator(source: number, options?: Partial<Options>): Separator;
@@ -286,9 +286,23 @@ export interface Core {
   openRefinedSurface(mesh: MeshArrays): RefinedSurface;
   /** The reconstruction error of a skeleton against a mesh (the mesh need not be manifold). */
   evaluate(mesh: MeshArrays, skeleton: SkeletonInput): Evaluation;
+  /** Test-only: the option defaults, ranges and auto-N constants the core declares (lib/core/options.ts must agree). */
+  optionLimits(): { defaults: Record<string, unknown>; ranges: Record<string, [number, number]>; autoN: Record<string, number> };
 }
+
+/**
+ * What kind of failure a CoreError is: the input or the arguments (the user can fix them), memory (the
+ * heap or the memory limit is too small for the mesh: decimate it), or internal (a library failed).
+ */
+export type CoreErrorKind = 'input' | 'memory' | 'internal';
 
 /** An error the core reports about its input or a computation: its message is meant for the user. */
 export class CoreError extends Error {
   override name = 'CoreError';
+  constructor(
+    message: string,
+    readonly kind: CoreErrorKind = 'input',
+  ) {
+    super(message);
+  }
 }

@@ -144,7 +144,7 @@ describe('cscd separator', () => {
       [['--laplacian-threshold', '1x'], "--laplacian-threshold must be a number, got '1x'"],
       [['--prune-depth=-1'], "--prune-depth must be an integer from 0 to 1000, got '-1'"],
       [['--laplacian-threshold=-0.5'], "--laplacian-threshold must be a number from 0 to 1000000, got '-0.5'"],
-      [['--angle-threshold', '4'], "--angle-threshold must be an angle in radians from 0 to pi, got '4'"],
+      [['--angle-threshold', '4'], "--angle-threshold must be a number from 0 to pi, got '4'"],
       [['--seed', '1.5'], "--seed must be an integer from 0 to 4294967295, got '1.5'"],
       [['--source', '7200'], "--source must be a vertex index from 0 to 7199, got '7200'"],
     ] as [string[], string][]) {

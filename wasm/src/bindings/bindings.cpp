@@ -1,6 +1,7 @@
 // embind surface of the core. Arrays cross as typed arrays (one copy in, one copy out: JS owns every
 // result, so heap growth cannot invalidate it). Nothing here throws into JS: a call that fails returns
-// the error message as a string, which lib/core turns into a CoreError.
+// {coreError: kind, message} (ErrorKind below), which lib/core turns into a CoreError of that kind.
+#include "cscd/pipeline.h"
 #include "evaluate/reconstruction_error.h"
 #include "mesh/realization.h"
 #include "mesh/separator.h"
@@ -11,7 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -84,12 +87,19 @@ val toVal(const std::vector<std::pair<std::string, double>>& timings) {
   return o;
 }
 
+const OptionRange& rangeOf(const std::string& name) {
+  for (const OptionRange& range : kOptionRanges)
+    if (name == range.name) return range;
+  throw std::logic_error("no range for option " + name);
+}
+
 Options toOptions(const val& given) {
   Options options;
   if (given.isUndefined() || given.isNull()) return options;
-  auto number = [&](const char* name, double low, double high, double fallback) {
+  auto number = [&](const char* name, double fallback) {
     val v = given[name];
     if (v.isUndefined()) return fallback;
+    const auto [_, low, high] = rangeOf(name);
     double x = v.as<double>();
     if (!(x >= low && x <= high)) {
       std::ostringstream msg;
@@ -105,21 +115,52 @@ Options toOptions(const val& given) {
     options.target = target == "euclid" ? TargetMode::Euclidean : TargetMode::Geodesic;
   }
   if (!given["sphere"].isUndefined()) options.sphere = given["sphere"].as<bool>();
-  options.seed = uint32_t(number("seed", 0, 4294967295.0, options.seed));
-  options.angleThreshold = number("angleThreshold", 0, M_PI, options.angleThreshold);
-  options.laplacianThreshold = number("laplacianThreshold", 0, 1e6, options.laplacianThreshold);
-  options.pruneDepth = int(number("pruneDepth", 0, 1000, options.pruneDepth));
+  options.seed = uint32_t(number("seed", options.seed));
+  options.angleThreshold = number("angleThreshold", options.angleThreshold);
+  options.laplacianThreshold = number("laplacianThreshold", options.laplacianThreshold);
+  options.pruneDepth = int(number("pruneDepth", options.pruneDepth));
   val n = given["n"];
   if (!n.isUndefined()) {
     if (n.isString()) {
       if (n.as<std::string>() != "auto") throw InputError("option n must be a number of sources or 'auto'");
       options.n = 0;
     } else {
-      options.n = int(number("n", 1, 100000, options.n));
+      options.n = int(number("n", options.n));
     }
   }
-  options.pruneLengthFactor = number("pruneLengthFactor", 0, 1000, options.pruneLengthFactor);
+  options.pruneLengthFactor = number("pruneLengthFactor", options.pruneLengthFactor);
   return options;
+}
+
+// The core's option defaults, ranges and auto-N constants, for the test that holds lib/core/options.ts to them.
+val optionLimits() {
+  const Options d;
+  val defaults = val::object();
+  defaults.set("target", std::string(d.target == TargetMode::Euclidean ? "euclid" : "geodesic"));
+  defaults.set("sphere", d.sphere);
+  defaults.set("seed", d.seed);
+  defaults.set("angleThreshold", d.angleThreshold);
+  defaults.set("laplacianThreshold", d.laplacianThreshold);
+  defaults.set("pruneDepth", d.pruneDepth);
+  defaults.set("n", d.n == 0 ? val("auto") : val(d.n));
+  defaults.set("pruneLengthFactor", d.pruneLengthFactor);
+  val ranges = val::object();
+  for (const OptionRange& range : kOptionRanges) {
+    val pair = val::array();
+    pair.call<void>("push", range.low);
+    pair.call<void>("push", range.high);
+    ranges.set(range.name, pair);
+  }
+  val autoN = val::object();
+  autoN.set("covered", kAutoCovered);
+  autoN.set("window", double(kAutoWindow));
+  autoN.set("minGain", kAutoMinGain);
+  autoN.set("max", double(kMaxAutoSources));
+  val limits = val::object();
+  limits.set("defaults", defaults);
+  limits.set("ranges", ranges);
+  limits.set("autoN", autoN);
+  return limits;
 }
 
 val toVal(const SeparatorResult& r, Surface& surface) {
@@ -241,14 +282,41 @@ val toVal(const Skeleton& skeleton, const Options& options) {
   return o;
 }
 
+// What went wrong, as the caller can act on it: its input or arguments (InputError), the heap (a failed
+// allocation), or anything else (a library's failure or a bug).
+enum class ErrorKind { Input, Memory, Internal };
+
+struct Failure {
+  ErrorKind kind;
+  std::string message;
+};
+
+Failure failureOf(std::exception_ptr error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::bad_alloc&) {
+    return {ErrorKind::Memory, "out of memory: the mesh is too large for the WebAssembly heap"};
+  } catch (const InputError& e) {
+    return {ErrorKind::Input, e.what()};
+  } catch (const std::exception& e) {
+    return {ErrorKind::Internal, e.what()};
+  }
+}
+
+val toVal(const Failure& failure) {
+  static const char* const kNames[] = {"input", "memory", "internal"};
+  val o = val::object();
+  o.set("coreError", std::string(kNames[int(failure.kind)]));
+  o.set("message", failure.message);
+  return o;
+}
+
 template <class Body>
 val reportingErrors(Body&& body) {
   try {
     return body();
-  } catch (const std::bad_alloc&) {
-    return val(std::string("out of memory: the mesh is too large for the WebAssembly heap"));
-  } catch (const std::exception& e) {
-    return val(std::string(e.what()));
+  } catch (...) {
+    return toVal(failureOf(std::current_exception()));
   }
 }
 
@@ -307,14 +375,12 @@ public:
   SurfaceBinding(const val& positions, const val& triangles) {
     try {
       surface = std::make_unique<Surface>(toArrays(positions, triangles));
-    } catch (const std::bad_alloc&) {
-      failure = "out of memory: the mesh is too large for the WebAssembly heap";
-    } catch (const std::exception& e) {
-      failure = e.what();
+    } catch (...) {
+      failure = failureOf(std::current_exception());
     }
   }
 
-  std::string error() const { return failure; }
+  val error() const { return failure ? toVal(*failure) : val::null(); }
 
   val facts() const { return surface ? toVal(surface->facts()) : val::null(); }
 
@@ -324,6 +390,7 @@ public:
     });
   }
 
+  // Test-only (tests/unit/core-geodesics.test.ts): the exact reference the heat method is held to.
   val exactDistanceFromVertex(double vertex) {
     return reportingErrors([&] {
       return toFloat64Array(surface->geodesics().exactFromVertex(checkedVertex(vertex)));
@@ -334,6 +401,7 @@ public:
     return reportingErrors([&] { return toVal(computeSeparator(*surface, checkedVertex(source), toOptions(options)), *surface); });
   }
 
+  // Test-only: the multi-source solve that regions and sampling use inside the core.
   // faces: one input face index per point; barycentric: three coordinates per point.
   val distanceFromPoints(const val& faces, const val& barycentric) {
     return reportingErrors([&] {
@@ -367,7 +435,7 @@ private:
   }
 
   std::unique_ptr<Surface> surface;
-  std::string failure;
+  std::optional<Failure> failure;
   friend class PipelineBinding;
 };
 
@@ -380,12 +448,12 @@ public:
       settings = toOptions(options);
       realization = std::make_unique<MeshRealization>(*surface.surface, settings);
       pipeline = std::make_unique<MeshPipeline>(*realization, settings);
-    } catch (const std::exception& e) {
-      failure = e.what();
+    } catch (...) {
+      failure = failureOf(std::current_exception());
     }
   }
 
-  std::string error() const { return failure; }
+  val error() const { return failure ? toVal(*failure) : val::null(); }
 
   val step(double count) {
     return reportingErrors([&] {
@@ -417,7 +485,7 @@ private:
   std::unique_ptr<MeshRealization> realization;
   std::unique_ptr<MeshPipeline> pipeline;
   size_t loopsReported = 0;
-  std::string failure;
+  std::optional<Failure> failure;
 };
 
 } // namespace
@@ -427,6 +495,7 @@ EMSCRIPTEN_BINDINGS(cscd) {
   using namespace cscd;
   function("inspect", &inspect);
   function("evaluate", &evaluate);
+  function("optionLimits", &optionLimits); // test-only: tests/unit/options.test.ts
   class_<SurfaceBinding>("Surface")
       .constructor<const val&, const val&>()
       .function("error", &SurfaceBinding::error)

@@ -1,31 +1,39 @@
 // Types of the embind module built from wasm/src/bindings/bindings.cpp (copied next to the generated
-// build/wasm/cscd.js by scripts/build-wasm.sh). Failing calls return the error message as a string.
+// build/wasm/cscd.js by scripts/build-wasm.sh). Failing calls return a CoreFailure instead of their result.
+
+/** What a failing call returns: the kind of failure (input, memory, internal) and a message for the user. */
+export interface CoreFailure {
+  coreError: 'input' | 'memory' | 'internal';
+  message: string;
+}
 export interface SurfaceHandle {
-  error(): string;
+  error(): CoreFailure | null;
   facts(): unknown;
-  distanceFromVertex(vertex: number): Float64Array | string;
-  exactDistanceFromVertex(vertex: number): Float64Array | string;
-  separator(source: number, options: object): object | string;
-  distanceFromPoints(faces: Uint32Array, barycentric: Float64Array): Float64Array | string;
+  distanceFromVertex(vertex: number): Float64Array | CoreFailure;
+  exactDistanceFromVertex(vertex: number): Float64Array | CoreFailure;
+  separator(source: number, options: object): object | CoreFailure;
+  distanceFromPoints(faces: Uint32Array, barycentric: Float64Array): Float64Array | CoreFailure;
   delete(): void;
 }
 
 export interface PipelineHandle {
-  error(): string;
-  step(sources: number): object | string;
-  finish(): object | string;
+  error(): CoreFailure | null;
+  step(sources: number): object | CoreFailure;
+  finish(): object | CoreFailure;
   delete(): void;
 }
 
 export interface CscdModule {
-  inspect(positions: Float64Array | Float32Array, triangles: Uint32Array): unknown;
+  inspect(positions: Float64Array | Float32Array, triangles: Uint32Array): object | CoreFailure;
   evaluate(
     positions: Float64Array | Float32Array,
     triangles: Uint32Array,
     nodes: Float64Array,
     edges: Uint32Array,
     radii: Float64Array | null,
-  ): object | string;
+  ): object | CoreFailure;
+  /** Test-only: the core's option defaults, ranges and auto-N constants. */
+  optionLimits(): { defaults: Record<string, unknown>; ranges: Record<string, [number, number]>; autoN: Record<string, number> };
   Surface: new (positions: Float64Array | Float32Array, triangles: Uint32Array) => SurfaceHandle;
   Pipeline: new (surface: SurfaceHandle, options: object) => PipelineHandle;
 }

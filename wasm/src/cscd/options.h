@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 namespace cscd {
@@ -7,8 +8,10 @@ namespace cscd {
 // How the target cut-locus point is chosen (paper Sec. 4.1.3): nearest in space or along the surface.
 enum class TargetMode { Euclidean, Geodesic };
 
-// Every option of the CSCD pipeline with its default. Mirrored by `Options` in lib/core/types.ts; the
-// same names are used by the bindings, worker messages, UI labels and CLI flags (kebab-case there).
+// Every option of the CSCD pipeline with its default. The specification all front ends derive from is
+// lib/core/options.ts (names, kinds, defaults, ranges, CLI flags, help); the core declares the same
+// defaults here and ranges below, and tests/unit/options.test.ts holds the two to each other through
+// the bindings (`optionLimits`).
 struct Options {
   TargetMode target = TargetMode::Euclidean; // "euclid" | "geodesic"
   bool sphere = true;                        // keep the shortened loop inside a sphere around the source
@@ -18,6 +21,16 @@ struct Options {
   int pruneDepth = 3;                        // cut locus: leaf branches shorter than this (edges) are pruned
   int n = 0;                                 // sources to sample; 0 = auto (until coverage stops growing)
   double pruneLengthFactor = 3;              // loops shorter than this many mean edge lengths are pruned
+};
+
+// Accepted ranges of the numeric options (inclusive); toOptions in the bindings refuses anything else.
+struct OptionRange {
+  const char* name;
+  double low, high;
+};
+constexpr OptionRange kOptionRanges[] = {
+    {"seed", 0, 4294967295.0},   {"angleThreshold", 0, M_PI}, {"laplacianThreshold", 0, 1e6},
+    {"pruneDepth", 0, 1000},     {"n", 1, 100000},            {"pruneLengthFactor", 0, 1000},
 };
 
 } // namespace cscd

@@ -59,7 +59,7 @@ struct Progress {
 
 // Auto mode: sampling stops when the shape is covered (99% of it near a source or separator, as the
 // realization measures it) or when the last 20 sources added less than 0.5% coverage; never past
-// kMaxAutoSources.
+// kMaxAutoSources. The front ends state the rule from AUTO_N in lib/core/options.ts, held to these.
 constexpr size_t kMaxAutoSources = 400;
 constexpr size_t kAutoWindow = 20;
 constexpr double kAutoCovered = 0.99;

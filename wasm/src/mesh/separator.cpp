@@ -121,8 +121,8 @@ const char* loopThrough(Surface& surface, size_t source, const Extremity& extrem
   }
   shortened = shortenLoop(surface.intrinsic(), surface.geometry(), result.traced.loop, result.closed, result.sphere);
   result.message = shortened.failure;
-  if (!shortened.failure.empty())
-    return shortened.failure.rfind("the loop shrank", 0) == 0 ? "degenerate-loop" : "shorten-failed";
+  if (shortened.failureKind != ShortenedLoop::Failure::None)
+    return shortened.failureKind == ShortenedLoop::Failure::Degenerate ? "degenerate-loop" : "shorten-failed";
   // Both ends on one boundary loop separate the surface, but not always the constraint region: the
   // boundary may leave the sphere between them. Then the sides (and the score) are not defined.
   if (!result.closed && !(shortened.areas[0] > 0)) {

@@ -234,6 +234,7 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
     }
   } catch (const std::exception&) {
     // geometry-central's assertion texts name source files: not for users.
+    result.failureKind = ShortenedLoop::Failure::Region;
     result.failure = "could not build the constraint region around this loop (degenerate intrinsic triangles)";
     return result;
   }
@@ -246,6 +247,7 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
   std::set<Halfedge> onPath(path.begin(), path.end());
   bool doubledBack = closed && std::all_of(path.begin(), path.end(), [&](Halfedge he) { return onPath.count(he.twin()) > 0; });
   if (path.empty() || doubledBack || !(network.length() > 1e-9 * initialLength)) {
+    result.failureKind = ShortenedLoop::Failure::Degenerate;
     result.failure = "the loop shrank to a point: it encloses no feature inside the constraint region";
     return result;
   }

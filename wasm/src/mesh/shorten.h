@@ -22,7 +22,9 @@ struct ShortenedLoop {
   double length = 0;                  // geodesic length
   std::array<double, 2> areas{0, 0};  // the two sides inside the constraint region, smaller first;
                                       // (0, area of the region) when it does not separate the region
-  std::string failure;                // empty on success
+  // Why there is no loop: the constraint region could not be built, or the loop shrank to nothing.
+  enum class Failure { None, Region, Degenerate } failureKind = Failure::None;
+  std::string failure;                // what happened, for the user; empty on success
 };
 
 // Shortens a closed loop of vertices of the intrinsic Delaunay triangulation into a geodesic loop by

@@ -4,34 +4,21 @@
  * The panel owns the current options; `onChange` says which ones the user changed.
  */
 import GUI, { type Controller } from 'lil-gui';
-import { defaultOptions, optionRanges } from '../../../lib/core/options.ts';
+import { AUTO_N_RULE, defaultOptions, OPTIONS, optionRanges, type OptionSpec } from '../../../lib/core/options.ts';
 import type { Options } from '../../../lib/core/types.ts';
 
 export type OptionKey = keyof Options;
 
 /** Options of stage 1: a change re-runs the current source (and invalidates the whole-shape result). */
-export const STAGE1_OPTIONS: readonly OptionKey[] = ['target', 'sphere', 'angleThreshold', 'laplacianThreshold', 'pruneDepth'];
+export const STAGE1_OPTIONS: readonly OptionKey[] = OPTIONS.filter((o) => o.stage === 'separator').map((o) => o.key);
 
-/** What each option does, and its unit (every option is scale-free). */
-export const OPTION_HELP: Readonly<Record<OptionKey, string>> = {
-  target:
-    'Which cut-locus point the loop is traced from: the one nearest to the source in space (euclid, the paper) or along the surface (geodesic). Re-runs the source.',
-  sphere:
-    'Keep the shortened loop inside a sphere around the source that reaches the farthest point of the approximate loop, so separators stay local (Sec. 4.1.6). Re-runs the source.',
-  angleThreshold:
-    'Cut locus: minimum turn of the distance gradient across a ridge, in radians (0 to π). Higher keeps only sharp ridges: fewer, cleaner cut-locus branches. Re-runs the source.',
-  laplacianThreshold:
-    'Cut locus: minimum ridge sharpness, −(mean edge length) × Laplacian of the distance, unitless. Higher drops faint ridges. Re-runs the source.',
-  pruneDepth:
-    'Cut locus: leaf branches with fewer edges than this are pruned (a count of mesh edges). Higher removes more short spurs. Re-runs the source.',
-  n: 'Number of sources for the whole shape: more sources find more (and smaller) features but take longer. Re-runs the whole shape.',
-  seed: 'Fixes the random choices of the whole-shape run (which sources are sampled); same seed, same skeleton. Re-runs the whole shape.',
-  pruneLengthFactor:
-    'Loops shorter than this many mean edge lengths enclose no feature and are pruned before packing (Sec. 4.2.2). Re-runs the whole shape.',
-};
+/** The tooltip of an option: its help, and what a change re-runs. */
+export function optionTooltip(spec: OptionSpec): string {
+  const help = spec.help.charAt(0).toUpperCase() + spec.help.slice(1);
+  return `${help}. Re-runs ${spec.stage === 'separator' ? 'the source' : 'the whole shape'}.`;
+}
 
-const N_AUTO_HELP =
-  'auto: sample sources until 99% of the surface is near a source or a separator, or 20 more sources add less than 0.5% (at most 400).';
+const N_AUTO_HELP = `auto: sample sources ${AUTO_N_RULE}.`;
 
 /** Named option sets; each starts from the defaults. */
 export const PRESETS: Readonly<Record<string, Partial<Options>>> = {
@@ -73,48 +60,57 @@ export class ParamsPanel {
       .onChange((name: string) => this.applyPreset(name));
 
     // A slider only where the range is small and natural (an angle); elsewhere a number field with
-    // the range lower bound, the upper bound applied by `options` (optionRanges, as the core checks).
-    const one = gui.addFolder('Stage 1 · one source');
+    // the range's lower bound, the upper bound applied by `options` (optionRanges, as the core checks).
+    const folders = { separator: gui.addFolder('Stage 1 · one source'), skeleton: gui.addFolder('Stage 2 · whole shape') };
     const changed = (key: OptionKey) => () => this.changed([key]);
-    const [angleMin, angleMax] = optionRanges.angleThreshold;
-    tag(one.add(m, 'target', { 'euclid (space)': 'euclid', 'geodesic (surface)': 'geodesic' }), 'target', OPTION_HELP.target).onChange(changed('target'));
-    tag(one.add(m, 'sphere'), 'sphere', OPTION_HELP.sphere).onChange(changed('sphere'));
-    tag(one.add(m, 'angleThreshold', angleMin, angleMax, 0.01), 'angleThreshold', OPTION_HELP.angleThreshold).onFinishChange(changed('angleThreshold'));
-    tag(one.add(m, 'laplacianThreshold').min(optionRanges.laplacianThreshold[0]).step(0.01), 'laplacianThreshold', OPTION_HELP.laplacianThreshold).onFinishChange(
-      changed('laplacianThreshold'),
-    );
-    tag(one.add(m, 'pruneDepth').min(optionRanges.pruneDepth[0]).step(1), 'pruneDepth', OPTION_HELP.pruneDepth).onFinishChange(changed('pruneDepth'));
-
-    const whole = gui.addFolder('Stage 2 · whole shape');
-    tag(whole.add(m, 'nAuto').name('n auto'), 'n-auto', N_AUTO_HELP).onChange(() => {
-      this.nController.disable(m.nAuto);
-      this.changed(['n']);
-    });
-    this.nController = tag(whole.add(m, 'n').min(optionRanges.n[0]).step(1), 'n', OPTION_HELP.n).onFinishChange(changed('n'));
+    let nController: Controller | null = null;
+    for (const spec of OPTIONS) {
+      const folder = folders[spec.stage];
+      const tip = optionTooltip(spec);
+      switch (spec.kind) {
+        case 'choice': {
+          const labels = Object.fromEntries(Object.entries(spec.choices).map(([value, label]) => [`${value} (${label})`, value]));
+          tag(folder.add(m, spec.key, labels), spec.key, tip).onChange(changed(spec.key));
+          break;
+        }
+        case 'switch':
+          tag(folder.add(m, spec.key), spec.key, tip).onChange(changed(spec.key));
+          break;
+        case 'integer':
+          tag(folder.add(m, spec.key).min(spec.range[0]).step(1), spec.key, tip).onFinishChange(changed(spec.key));
+          break;
+        case 'number': {
+          const c = spec.slider ? folder.add(m, spec.key, spec.range[0], spec.range[1], spec.step) : folder.add(m, spec.key).min(spec.range[0]).step(spec.step);
+          tag(c, spec.key, tip).onFinishChange(changed(spec.key));
+          break;
+        }
+        case 'count':
+          tag(folder.add(m, 'nAuto').name('n auto'), 'n-auto', N_AUTO_HELP).onChange(() => {
+            this.nController.disable(m.nAuto);
+            this.changed(['n']);
+          });
+          nController = tag(folder.add(m, 'n').min(spec.range[0]).step(1), 'n', tip).onFinishChange(changed('n'));
+          break;
+      }
+    }
+    this.nController = nController!;
     this.nController.disable(m.nAuto);
-    tag(whole.add(m, 'seed').min(optionRanges.seed[0]).step(1), 'seed', OPTION_HELP.seed).onFinishChange(changed('seed'));
-    tag(whole.add(m, 'pruneLengthFactor').min(optionRanges.pruneLengthFactor[0]).step(0.5), 'pruneLengthFactor', OPTION_HELP.pruneLengthFactor).onFinishChange(
-      changed('pruneLengthFactor'),
-    );
   }
 
   /** The current options, clamped to their accepted ranges. */
   get options(): Options {
     const m = this.model;
-    const clamp = (x: number, [lo, hi]: readonly [number, number], integer = false) => {
+    const clamp = (x: number, [lo, hi]: readonly [number, number], integer: boolean) => {
       const v = Number.isFinite(x) ? x : lo;
       return Math.min(hi, Math.max(lo, integer ? Math.round(v) : v));
     };
-    return {
-      target: m.target,
-      sphere: m.sphere,
-      seed: clamp(m.seed, optionRanges.seed, true),
-      angleThreshold: clamp(m.angleThreshold, optionRanges.angleThreshold),
-      laplacianThreshold: clamp(m.laplacianThreshold, optionRanges.laplacianThreshold),
-      pruneDepth: clamp(m.pruneDepth, optionRanges.pruneDepth, true),
-      n: m.nAuto ? 'auto' : clamp(m.n, optionRanges.n, true),
-      pruneLengthFactor: clamp(m.pruneLengthFactor, optionRanges.pruneLengthFactor),
-    };
+    const options: Record<string, unknown> = {};
+    for (const spec of OPTIONS) {
+      if (spec.kind === 'choice' || spec.kind === 'switch') options[spec.key] = m[spec.key];
+      else if (spec.kind === 'count') options.n = m.nAuto ? 'auto' : clamp(m.n, optionRanges.n, true);
+      else options[spec.key] = clamp(m[spec.key], spec.range, spec.kind === 'integer');
+    }
+    return options as unknown as Options;
   }
 
   /** Shows `options` (a shared link, a preset) without reporting a change. */

@@ -130,10 +130,6 @@ export class GeometryClient {
     return { result, cancel: job.cancel };
   }
 
-  distance(source: number): Promise<ReplyFor['distance']> {
-    return this.request({ type: 'distance', source });
-  }
-
   /** Stage 1 from `source` (null: the worker's last source) with options differing from the defaults. */
   separator(source: number | null, options: Partial<Options> = {}): Promise<ReplyFor['separator']> {
     return this.request({ type: 'separator', source, options });

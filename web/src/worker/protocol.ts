@@ -22,13 +22,6 @@ export interface OpenRequest {
   withArrays: boolean;
 }
 
-export interface DistanceRequest {
-  type: 'distance';
-  id: number;
-  /** Source vertex index. */
-  source: number;
-}
-
 /**
  * Stage 1 of CSCD-M (one separator, every intermediate kept) from a source vertex. Per-mesh data is
  * cached in the core, so re-running the same source with other options is cheap.
@@ -118,7 +111,6 @@ export interface CancelRequest {
 
 export type WorkerRequest =
   | OpenRequest
-  | DistanceRequest
   | SeparatorRequest
   | SkeletonRequest
   | EvaluateRequest
@@ -176,17 +168,6 @@ export interface DecimatedReply {
   /** How the decimated mesh was then refined, when it came out coarse (as in OpenedReply: the arrays are after it, the facts before). */
   refined: Refinement | null;
   timings: { decimateMs: number };
-}
-
-export interface DistanceReply {
-  type: 'distance';
-  id: number;
-  source: number;
-  /** Geodesic distance per vertex; non-finite values (unreachable vertices) are kept as is. */
-  distance: Float32Array;
-  /** Largest finite distance. */
-  max: number;
-  timings: { distanceMs: number };
 }
 
 /** A Separator as it travels to the page: float32 arrays for the GPU, every buffer transferred. */
@@ -269,7 +250,7 @@ export interface ErrorReply {
   message: string;
 }
 
-export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'decimate' | 'distance' | 'separator' | 'sources' | 'stage2' | 'evaluate';
+export type ProgressStage = 'parse' | 'load-core' | 'inspect' | 'prepare' | 'decimate' | 'separator' | 'sources' | 'stage2' | 'evaluate';
 
 /** News of a pipeline run after one step (PipelineProgress with float32 loops, transferred). */
 export interface PipelineNews {
@@ -297,7 +278,6 @@ export interface ProgressEvent {
 
 export type WorkerReply =
   | OpenedReply
-  | DistanceReply
   | SeparatorReply
   | SkeletonReply
   | EvaluationReply
@@ -309,7 +289,6 @@ export type WorkerMessage = WorkerReply | ProgressEvent;
 /** The reply type that answers each request type. */
 export interface ReplyFor {
   open: OpenedReply;
-  distance: DistanceReply;
   separator: SeparatorReply;
   skeleton: SkeletonReply;
   evaluate: EvaluationReply;

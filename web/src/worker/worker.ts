@@ -6,7 +6,7 @@
  */
 import { createCore } from '../../../lib/core/index.ts';
 import { defaultOptions } from '../../../lib/core/options.ts';
-import type { Core, MeshArrays, MeshFacts, Options, Pipeline, Refinement, Separator, Skeleton, Surface } from '../../../lib/core/types.ts';
+import { CoreError, type Core, type MeshArrays, type MeshFacts, type Options, type Pipeline, type Refinement, type Separator, type Skeleton, type Surface } from '../../../lib/core/types.ts';
 import { parseMesh } from '../../../lib/io/index.ts';
 import { repairMesh } from '../../../lib/io/repair.ts';
 import { writeLoopsObj } from '../../../lib/io/loops.ts';
@@ -17,7 +17,6 @@ import wasmUrl from '../../../build/wasm/cscd.wasm?url';
 import {
   transferables,
   type DecimateRequest,
-  type DistanceRequest,
   type ErrorKind,
   type EvaluateRequest,
   type OpenRequest,
@@ -86,7 +85,7 @@ function classify(error: unknown): { kind: ErrorKind; message: string } {
   const name = error instanceof Error ? error.name : '';
   const message = error instanceof Error ? error.message : String(error);
   if (name === 'MeshFormatError') return { kind: 'format', message };
-  if (name === 'CoreError') return { kind: message.startsWith('out of memory') ? 'memory' : 'core', message };
+  if (error instanceof CoreError) return { kind: error.kind === 'memory' ? 'memory' : 'core', message };
   // WebAssembly.RuntimeError (abort, trap, out of memory) or a bug: the core's state is suspect.
   const what = error instanceof WebAssembly.RuntimeError ? 'The geometry core crashed' : 'The geometry worker failed';
   return { kind: 'crash', message: `${what}: ${message || name || 'unknown error'}` };
@@ -222,18 +221,6 @@ function finiteMax(values: ArrayLike<number>): number {
     if (d > max && Number.isFinite(d)) max = d;
   }
   return max;
-}
-
-async function distance(request: DistanceRequest): Promise<void> {
-  const { id, source } = request;
-  const { surface } = await surfaceFor(id, source);
-  progress(id, 'distance', 'computing distance…');
-  const t = performance.now();
-  const d64 = surface.distanceFromVertex(source);
-  const distanceMs = performance.now() - t;
-  const distance = new Float32Array(d64);
-  const max = finiteMax(distance);
-  post({ type: 'distance', id, source, distance, max, timings: { distanceMs } }, transferables(distance));
 }
 
 const f32 = (a: ArrayLike<number> | null | undefined) => Float32Array.from(a ?? []);
@@ -466,8 +453,6 @@ async function handle(request: WorkerRequest): Promise<void> {
         return await open(request);
       case 'restore':
         return await restore(request);
-      case 'distance':
-        return await distance(request);
       case 'separator':
         return await separator(request);
       case 'decimate':

@@ -370,7 +370,10 @@ function refresh(): void {
   // A file of the user's cannot be linked to: its source vertex would mean nothing on the default sample.
   const sample = mesh?.sample ?? null;
   writeUrl({ mesh: sample, stage: key, source: sample ? single.source : null, options: params.options });
+  // Drawn now, not at the next animation frame: a stage change leaves the state 'ready', so whoever
+  // reads the picture once the page shows the new stage must get the new stage's pixels.
   viewer.requestRender();
+  viewer.flush();
 }
 
 /** The time each stage's computation took, under its pill. */
@@ -481,10 +484,12 @@ byTestId('dl-png').addEventListener('click', async () => {
 flatBox.addEventListener('change', () => {
   viewer.surface?.setFlatShading(flatBox.checked);
   viewer.requestRender();
+  viewer.flush();
 });
 isolinesBox.addEventListener('change', () => {
   viewer.surface?.setIsolines(isolinesBox.checked);
   viewer.requestRender();
+  viewer.flush();
 });
 document.querySelector('#reset-view')!.addEventListener('click', () => viewer.frame());
 viewer.onLayersChange = () => updateLayerList(stageDef(shownStage()).layers, stageDef(shownStage()).dimmed ?? []);

@@ -1,4 +1,4 @@
-// Acceptance check of stage 1 (issue 3): `separator` from N seeded-random sources on every mesh, in one
+// Acceptance check of stage 1: `separator` from N seeded-random sources on every mesh, in one
 // process (the core is loaded once and each mesh opened once, so this is fast), never throwing.
 //
 //   npx tsx scripts/check-separators.ts [--sources 20] [--seed 1] [--out docs/separators-check.md]

@@ -1,5 +1,5 @@
 /**
- * Determinism across platforms (issue 7): the skeleton the page computes in its worker is the one the
+ * Determinism across platforms: the skeleton the page computes in its worker is the one the
  * CLI computes in Node for the same mesh, options and seed, number for number.
  */
 import { execFileSync } from 'node:child_process';

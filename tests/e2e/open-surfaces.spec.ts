@@ -1,5 +1,5 @@
 /**
- * Open surfaces in the page (issue 7; docs/separator.md "Separators that end on the boundary"): a
+ * Open surfaces in the page (docs/separator.md "Separators that end on the boundary"): a
  * strip dropped on the page gets a separator that is an open path between two boundary points, shown
  * with the boundary extremities and its two ends, and a skeleton made of such paths.
  */

@@ -1,5 +1,5 @@
 /**
- * No data leaves the machine (issue 7): under the page's content security policy, opening a mesh
+ * No data leaves the machine: under the page's content security policy, opening a mesh
  * from disk and computing its skeleton and reconstruction requests nothing but the page's own assets,
  * and nothing the policy would block is attempted.
  */

@@ -1,4 +1,4 @@
-// Separators that end on the boundary (paper Sec. 3.2 and App. "Results on Meshes with Holes"): issue 7.
+// Separators that end on the boundary (paper Sec. 3.2 and App. "Results on Meshes with Holes").
 // Sheets made in code, so the right answer is known: a strip's cross-sections, a plus sign's arms.
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';

@@ -1,4 +1,4 @@
-// The paper's reconstruction error (issue 5): analytic skeletons score near zero, wrong ones clearly
+// The paper's reconstruction error: analytic skeletons score near zero, wrong ones clearly
 // worse, the value does not depend on the mesh's scale or position, and `cscd evaluate` reads the
 // skeleton files of CSCD Studio and of other tools.
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';

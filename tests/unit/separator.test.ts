@@ -1,4 +1,4 @@
-// Stage 1 of CSCD-M (one local separator per source) on real and analytic meshes: issue 3's checks.
+// Stage 1 of CSCD-M (one local separator per source) on real and analytic meshes.
 import { beforeAll, describe, expect, it } from 'vitest';
 import { defaultOptions, loadCoreNode, type Core, type MeshArrays, type Separator, type Surface } from '../../lib/core/node.ts';
 import { extremities, icosphere, pointTriangleDistance2, readMesh, withSlivers } from './support/meshes.ts';

@@ -19,10 +19,12 @@
 #include "cscd/options.h"
 #include "cscd/pack.h"
 #include "cscd/regions.h"
+#include "cscd/stage_clock.h"
 
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -74,8 +76,31 @@ constexpr double kBandWidth = 1.0;
 // is half the circumference of the flattened tube the sheet is.
 inline double separatorRadius(const Candidate& c) { return c.length / (c.closed ? 2 * M_PI : M_PI); }
 
+// The Realization interface, checked by the compiler (a C++17 stand-in for a concept): each step with
+// the signature the pipeline calls it with.
+template <class R>
+struct IsRealization {
+  static constexpr bool value =
+      std::is_same_v<decltype(std::declval<R&>().separator(size_t())), Candidate> &&
+      std::is_convertible_v<decltype(std::declval<R&>().nextSource()), size_t> &&
+      std::is_void_v<decltype(std::declval<R&>().cover(size_t()))> &&
+      std::is_convertible_v<decltype(std::declval<R&>().coverage()), double> &&
+      std::is_convertible_v<decltype(std::declval<R&>().resolution()), double> &&
+      std::is_same_v<decltype(std::declval<R&>().overlaps(std::declval<const std::vector<size_t>&>())),
+                     std::vector<std::vector<size_t>>> &&
+      std::is_same_v<decltype(std::declval<R&>().regions(std::declval<const std::vector<size_t>&>())), Regions> &&
+      std::is_void_v<decltype(std::declval<R&>().centre(std::declval<SkeletonGraph&>(),
+                                                         std::declval<const std::vector<size_t>&>()))> &&
+      std::is_same_v<decltype(std::declval<R&>().samples()), const Samples&> &&
+      std::is_convertible_v<decltype(std::declval<R&>().inside(std::declval<const geometrycentral::Vector3&>())), bool> &&
+      std::is_void_v<decltype(std::declval<R&>().fitRadii(std::declval<SkeletonGraph&>()))>;
+};
+
 template <class Realization>
 class Pipeline {
+  static_assert(IsRealization<Realization>::value,
+                "a Realization needs every step listed at the top of cscd/pipeline.h, with those signatures");
+
 public:
   Pipeline(Realization& realization, const Options& options) : realization(realization), options(options) {}
 
@@ -97,12 +122,7 @@ public:
     while (!done) step(1);
     Skeleton skeleton;
     skeleton.timings.emplace_back("separators", stage1Ms);
-    auto clock = std::chrono::steady_clock::now();
-    auto lap = [&](const char* stage) {
-      auto now = std::chrono::steady_clock::now();
-      skeleton.timings.emplace_back(stage, std::chrono::duration<double, std::milli>(now - clock).count());
-      clock = now;
-    };
+    StageClock clock(skeleton.timings);
 
     skeleton.fates.assign(candidates.size(), Fate::Overlapping);
     std::vector<size_t> kept;
@@ -114,7 +134,7 @@ public:
       if (fate == Fate::Overlapping) kept.push_back(i);
       else if (fate != Fate::Failed) skeleton.pruned++;
     }
-    lap("prune");
+    clock.lap("prune");
 
     std::vector<std::vector<size_t>> overlaps = realization.overlaps(kept);
     std::vector<double> scores;
@@ -123,10 +143,10 @@ public:
       skeleton.packed.push_back(kept[j]);
       skeleton.fates[kept[j]] = Fate::Packed;
     }
-    lap("pack");
+    clock.lap("pack");
 
     Regions regions = realization.regions(skeleton.packed);
-    lap("regions");
+    clock.lap("regions");
 
     SkeletonGraph& graph = skeleton.graph;
     graph.nodes = regions.centroid;
@@ -134,7 +154,7 @@ public:
     graph.edges.assign(regions.adjacent.begin(), regions.adjacent.end());
     cliquesToStars(graph, regions.junctions);
     realization.centre(graph, skeleton.packed);
-    lap("graph");
+    clock.lap("graph");
 
     std::vector<double> width(regions.count, 0);
     std::vector<char> solid(regions.count, 0);
@@ -146,7 +166,7 @@ public:
     skeleton.vertexToNode = refineIntoBands(graph, regions, realization.samples(), width, solid,
                                             [&](const geometrycentral::Vector3& p) { return realization.inside(p); });
     realization.fitRadii(graph);
-    lap("bands");
+    clock.lap("bands");
 
     skeleton.candidates = std::move(candidates);
     candidates.clear();

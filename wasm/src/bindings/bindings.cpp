@@ -166,7 +166,7 @@ val optionLimits() {
 val toVal(const SeparatorResult& r, Surface& surface) {
   val o = val::object();
   o.set("source", r.source);
-  o.set("status", r.status);
+  o.set("status", std::string(separatorStatusName(r.status)));
   o.set("message", r.message);
   o.set("distance", toFloat64Array(r.distance));
 

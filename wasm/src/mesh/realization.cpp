@@ -21,7 +21,7 @@ Candidate MeshRealization::separator(size_t source) {
   SeparatorResult result = computeSeparator(surface, source, options, /*everyAngle=*/false);
   Candidate candidate;
   candidate.source = source;
-  candidate.found = result.status == "ok";
+  candidate.found = result.status == SeparatorStatus::Ok;
   candidate.loop = result.loop;
   candidate.closed = result.closed;
   candidate.length = result.length;

@@ -37,7 +37,7 @@ double intrinsicLength(Surface& surface, const std::vector<size_t>& loop, bool c
   return length;
 }
 
-SeparatorResult& fail(SeparatorResult& result, const char* status, std::string message) {
+SeparatorResult& fail(SeparatorResult& result, SeparatorStatus status, std::string message) {
   result.status = status;
   result.message = std::move(message);
   return result;
@@ -88,8 +88,8 @@ std::vector<Extremity> rankExtremities(Surface& surface, size_t source, const Op
 }
 
 // Trace, constrain and shorten the loop (or path) through one extremity; returns the failure status,
-// or "" on success. Every per-attempt field is set afresh, so a result never mixes two attempts.
-const char* loopThrough(Surface& surface, size_t source, const Extremity& extremity, const Options& options,
+// or Ok. Every per-attempt field is set afresh, so a result never mixes two attempts.
+SeparatorStatus loopThrough(Surface& surface, size_t source, const Extremity& extremity, const Options& options,
                         SeparatorResult& result, ShortenedLoop& shortened) {
   result.target = extremity.ends ? std::nullopt : std::optional<size_t>(extremity.target);
   result.ends = extremity.ends;
@@ -105,7 +105,7 @@ const char* loopThrough(Surface& surface, size_t source, const Extremity& extrem
                       : traceApproximateLoop(intrinsicMesh, result.distance, result.cutLocus, extremity.target, source);
   if (!result.traced.failure.empty()) {
     result.message = result.traced.failure;
-    return "trace-failed";
+    return SeparatorStatus::TraceFailed;
   }
   result.firstPath = tracePolyline(surface, result.traced.firstPath, false);
   result.secondPath = tracePolyline(surface, result.traced.secondPath, false);
@@ -122,17 +122,31 @@ const char* loopThrough(Surface& surface, size_t source, const Extremity& extrem
   shortened = shortenLoop(surface.intrinsic(), surface.geometry(), result.traced.loop, result.closed, result.sphere);
   result.message = shortened.failure;
   if (shortened.failureKind != ShortenedLoop::Failure::None)
-    return shortened.failureKind == ShortenedLoop::Failure::Degenerate ? "degenerate-loop" : "shorten-failed";
+    return shortened.failureKind == ShortenedLoop::Failure::Degenerate ? SeparatorStatus::DegenerateLoop
+                                                                        : SeparatorStatus::ShortenFailed;
   // Both ends on one boundary loop separate the surface, but not always the constraint region: the
   // boundary may leave the sphere between them. Then the sides (and the score) are not defined.
   if (!result.closed && !(shortened.areas[0] > 0)) {
     result.message = "the path between the boundary ends does not separate the region around the source";
-    return "not-separating";
+    return SeparatorStatus::NotSeparating;
   }
-  return "";
+  return SeparatorStatus::Ok;
 }
 
 } // namespace
+
+const char* separatorStatusName(SeparatorStatus status) {
+  switch (status) {
+    case SeparatorStatus::Ok: return "ok";
+    case SeparatorStatus::NoCutLocus: return "no-cut-locus";
+    case SeparatorStatus::NoTarget: return "no-target";
+    case SeparatorStatus::TraceFailed: return "trace-failed";
+    case SeparatorStatus::DegenerateLoop: return "degenerate-loop";
+    case SeparatorStatus::ShortenFailed: return "shorten-failed";
+    case SeparatorStatus::NotSeparating: return "not-separating";
+  }
+  return "ok";
+}
 
 SeparatorResult computeSeparator(Surface& surface, size_t source, const Options& options, bool everyAngle) {
   SeparatorResult result;
@@ -155,24 +169,24 @@ SeparatorResult computeSeparator(Surface& surface, size_t source, const Options&
   clock.lap("target");
   if (extremities.empty()) {
     if (result.cutLocus.vertices.empty() && result.boundaryExtremities.empty())
-      return fail(result, "no-cut-locus", "no cut locus was found for this source");
-    return fail(result, "no-target", "no point of the cut locus is reached around a feature, and no two boundary points face each other");
+      return fail(result, SeparatorStatus::NoCutLocus, "no cut locus was found for this source");
+    return fail(result, SeparatorStatus::NoTarget, "no point of the cut locus is reached around a feature, and no two boundary points face each other");
   }
 
   // The paper's target is the nearest; should its loop enclose nothing (a spurious ridge), farther ones
   // are tried, each clearly farther than the last failure.
   ShortenedLoop shortened;
-  const char* status = "";
+  SeparatorStatus status = SeparatorStatus::Ok;
   double lastFailedKey = 0;
   for (size_t i = 0; i < extremities.size() && result.attempts < kMaxTargets; i++) {
     if (result.attempts > 0 && extremities[i].key < kFallbackGrowth * lastFailedKey) continue;
     result.attempts++;
     status = loopThrough(surface, source, extremities[i], options, result, shortened);
-    if (!*status) break;
+    if (status == SeparatorStatus::Ok) break;
     lastFailedKey = extremities[i].key;
   }
   clock.lap("loop");
-  if (*status) return fail(result, status, result.message);
+  if (status != SeparatorStatus::Ok) return fail(result, status, result.message);
 
   for (const SurfacePoint& p : shortened.loop) result.loop.push_back(p.interpolate(surface.geometry().vertexPositions));
   result.loopPoints = std::move(shortened.loop);

@@ -14,11 +14,15 @@
 
 namespace cscd {
 
+// Why a source has no separator (Ok when it has one); separatorStatusName gives the name the bindings,
+// the CLI JSON and the page use (SeparatorStatus in lib/core/types.ts).
+enum class SeparatorStatus { Ok, NoCutLocus, NoTarget, TraceFailed, DegenerateLoop, ShortenFailed, NotSeparating };
+const char* separatorStatusName(SeparatorStatus status);
+
 // Stage 1 of CSCD-M for one source, with every intermediate result kept for the teaching views.
 struct SeparatorResult {
   size_t source = 0;
-  // or no-cut-locus | no-target | trace-failed | degenerate-loop | shorten-failed | not-separating
-  std::string status = "ok";
+  SeparatorStatus status = SeparatorStatus::Ok;
   std::string message;
 
   std::vector<double> distance;

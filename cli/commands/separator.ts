@@ -1,5 +1,5 @@
 import { writeFile } from 'node:fs/promises';
-import { defaultOptions, OPTIONS, optionProblem, optionText, parseOptionText, type OptionSpec } from '../../lib/core/options.ts';
+import { cliFlag, defaultOptions, NUMBER_TEXT, OPTIONS, optionProblem, parseOptionText, type OptionSpec } from '../../lib/core/options.ts';
 import { random } from '../../lib/core/random.ts';
 import type { MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
 import { UsageError, openSolver, readMesh, type Command, type OptionSpec as CliOptionSpec, type OptionValues } from '../command.ts';
@@ -33,15 +33,10 @@ export interface SeparatorJson {
   refined: Refinement | null;
 }
 
-/** The flag of an option: a switch that is on by default is turned off by --no-<flag>. */
-function flagOf(spec: OptionSpec): string {
-  return spec.kind === 'switch' && spec.default ? `no-${spec.flag}` : spec.flag;
-}
-
 function flagSpec(spec: OptionSpec): CliOptionSpec {
   if (spec.kind === 'switch') return { type: 'boolean', description: spec.default ? `do not ${spec.help}` : spec.help };
   const value = spec.kind === 'choice' ? Object.keys(spec.choices).join('|') : spec.placeholder;
-  return { type: 'string', value, description: `${spec.help} (default ${optionText(spec.default)})` };
+  return { type: 'string', value, description: `${spec.help} (default ${String(spec.default)})` };
 }
 
 /** An option's value from its flag; a usage error names the flag and what it accepts. */
@@ -50,7 +45,7 @@ function parseFlag(spec: OptionSpec, given: string | boolean, flag: string): Opt
   const text = String(given);
   const parsed = parseOptionText(spec, text);
   if (parsed !== null) return parsed;
-  const notANumber = spec.kind === 'number' && !/^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(text);
+  const notANumber = spec.kind === 'number' && !NUMBER_TEXT.test(text);
   throw new UsageError(`--${flag} ${notANumber ? 'must be a number' : optionProblem(spec, NaN)}, got '${text}'`);
 }
 
@@ -59,14 +54,14 @@ function parseFlag(spec: OptionSpec, given: string | boolean, flag: string): Opt
  * options as the command; with `pipeline: false`, only those of `cscd separator`.
  */
 export function optionFlagSpecs({ pipeline = true } = {}): Record<string, CliOptionSpec> {
-  return Object.fromEntries(OPTIONS.filter((o) => pipeline || o.commands === 'all').map((o) => [flagOf(o), flagSpec(o)]));
+  return Object.fromEntries(OPTIONS.filter((o) => pipeline || o.commands === 'all').map((o) => [cliFlag(o), flagSpec(o)]));
 }
 
 /** The full Options of a command line: defaults, overridden by the flags that were given. */
 export function optionsFromFlags(values: OptionValues): Options {
   const options: Record<string, unknown> = { ...defaultOptions };
   for (const spec of OPTIONS) {
-    const flag = flagOf(spec);
+    const flag = cliFlag(spec);
     const value = values[flag];
     if (value !== undefined && !Array.isArray(value)) options[spec.key] = parseFlag(spec, value, flag);
   }

@@ -79,11 +79,6 @@ export const OPTIONS: readonly OptionSpec[] = Object.freeze([
   },
 ] satisfies OptionSpec[]);
 
-/** The spec of one option. */
-export function optionSpec<K extends keyof Options>(key: K): Extract<OptionSpec, { key: K }> {
-  return OPTIONS.find((o) => o.key === key) as Extract<OptionSpec, { key: K }>;
-}
-
 /** Defaults of every option. */
 export const defaultOptions: Readonly<Options> = Object.freeze(
   Object.fromEntries(OPTIONS.map((o) => [o.key, o.default])) as unknown as Options,
@@ -111,35 +106,34 @@ export function optionProblem(spec: OptionSpec, value: unknown): string | null {
     }
     case 'number': {
       const [lo, hi] = spec.range;
-      return typeof value === 'number' && Number.isFinite(value) && value >= lo && value <= hi ? null : `must be a number from ${lo} to ${rangeText(hi)}`;
+      return typeof value === 'number' && Number.isFinite(value) && value >= lo && value <= hi ? null : `must be a number from ${lo} to ${hi === Math.PI ? 'pi' : hi}`;
     }
   }
 }
 
-/** A value as text ('auto', true, 1.75); the same text parses back with `parseOptionText`. */
-export function optionText(value: Options[keyof Options]): string {
-  return String(value);
+/** How a number may be written (a CLI argument, an address-bar parameter). */
+export const NUMBER_TEXT = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
+
+/** The CLI flag of an option: a switch that is on by default is turned off by --no-<flag>. */
+export function cliFlag(spec: OptionSpec): string {
+  return spec.kind === 'switch' && spec.default ? `no-${spec.flag}` : spec.flag;
 }
 
-/** An option's value from text (a CLI argument, an address-bar parameter); null when it is not acceptable. */
+/** An option's value from its text (String(value) writes it); null when it is not acceptable. */
 export function parseOptionText<K extends keyof Options>(spec: Extract<OptionSpec, { key: K }>, text: string): Options[K] | null {
   const s = spec as OptionSpec;
   let value: unknown = text;
   if (s.kind === 'switch') value = text === 'true' ? true : text === 'false' ? false : null;
   else if (s.kind === 'integer' || (s.kind === 'count' && text !== 'auto')) value = /^\d+$/.test(text) ? Number(text) : null;
-  else if (s.kind === 'number') value = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(text) ? Number(text) : null;
+  else if (s.kind === 'number') value = NUMBER_TEXT.test(text) ? Number(text) : null;
   return optionProblem(s, value) === null ? (value as Options[K]) : null;
 }
 
-/** A range bound as people write it (π, 2^32 − 1). */
-function rangeText(x: number): string {
-  return x === Math.PI ? 'pi' : x === 0xffffffff ? '2^32-1' : String(x);
-}
 
 /** The option table of the README and docs/cli.md: flag, option, default, meaning. */
 export function optionTable(): string {
   const flag = (o: OptionSpec) =>
-    o.kind === 'switch' ? `\`--no-${o.flag}\`` : o.kind === 'choice' ? `\`--${o.flag} ${Object.keys(o.choices).join('\\|')}\`` : `\`--${o.flag} ${o.placeholder.replace('|', '\\|')}\``;
-  const rows = OPTIONS.map((o) => `| ${flag(o)} | \`${o.key}\` | \`${optionText(o.default)}\` | ${o.stage === 'separator' ? 'stage 1' : 'whole shape'} | ${o.help.replaceAll('|', '\\|')} |`);
+    o.kind === 'switch' ? `\`--${cliFlag(o)}\`` : o.kind === 'choice' ? `\`--${o.flag} ${Object.keys(o.choices).join('\\|')}\`` : `\`--${o.flag} ${o.placeholder.replace('|', '\\|')}\``;
+  const rows = OPTIONS.map((o) => `| ${flag(o)} | \`${o.key}\` | \`${String(o.default)}\` | ${o.stage === 'separator' ? 'stage 1' : 'whole shape'} | ${o.help.replaceAll('|', '\\|')} |`);
   return ['| CLI flag | option | default | stage | meaning |', '|---|---|---|---|---|', ...rows].join('\n');
 }

@@ -300,6 +300,8 @@ Failure failureOf(std::exception_ptr error) {
     return {ErrorKind::Input, e.what()};
   } catch (const std::exception& e) {
     return {ErrorKind::Internal, e.what()};
+  } catch (...) {
+    return {ErrorKind::Internal, "the core failed with an unknown error"};
   }
 }
 

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <cstdint>
 #include <unordered_map>
+#include <unordered_set>
 
 using geometrycentral::Vector3;
 
@@ -68,25 +70,38 @@ std::vector<std::vector<size_t>> overlappingLoops(const std::vector<std::vector<
             grid[{x, y, z}].push_back({l, i});
     }
 
-  // Overlapping pairs as a bit matrix: many loops crowd the same cells (every source on a tube finds
-  // about the same loop), and the test that skips known pairs runs for every pair of their segments.
-  const size_t n = loops.size();
-  std::vector<bool> found(n * n, false);
+  // Many loops crowd the same cells (every source on a tube finds about the same loop): a cell's
+  // segments come in runs of one loop (filed loop by loop), and each pair of runs is looked up once in
+  // the set of pairs found, then tested segment by segment until one pair is close.
+  const uint64_t n = loops.size();
+  std::unordered_set<uint64_t> found;
   const double tolerance2 = tolerance * tolerance;
-  for (const auto& [key, segments] : grid)
+  auto close = [&](const Segment& s, const Segment& t) {
+    const auto &ls = loops[s.loop], &lt = loops[t.loop];
+    return segmentDistance2(ls[s.index], ls[(s.index + 1) % ls.size()], lt[t.index], lt[(t.index + 1) % lt.size()]) <= tolerance2;
+  };
+  std::vector<size_t> runStart;
+  for (const auto& [key, segments] : grid) {
+    runStart.clear();
     for (size_t i = 0; i < segments.size(); i++)
-      for (size_t j = i + 1; j < segments.size(); j++) {
-        const Segment &s = segments[i], &t = segments[j];
-        if (s.loop == t.loop || found[s.loop * n + t.loop]) continue;
-        const auto &ls = loops[s.loop], &lt = loops[t.loop];
-        if (segmentDistance2(ls[s.index], ls[(s.index + 1) % ls.size()], lt[t.index], lt[(t.index + 1) % lt.size()]) <=
-            tolerance2)
-          found[s.loop * n + t.loop] = found[t.loop * n + s.loop] = true;
+      if (i == 0 || segments[i].loop != segments[i - 1].loop) runStart.push_back(i);
+    runStart.push_back(segments.size());
+    for (size_t a = 0; a + 1 < runStart.size(); a++)
+      for (size_t b = a + 1; b + 1 < runStart.size(); b++) {
+        const uint64_t pair = segments[runStart[a]].loop * n + segments[runStart[b]].loop;
+        if (found.count(pair)) continue;
+        bool hit = false;
+        for (size_t i = runStart[a]; i < runStart[a + 1] && !hit; i++)
+          for (size_t j = runStart[b]; j < runStart[b + 1] && !hit; j++) hit = close(segments[i], segments[j]);
+        if (hit) found.insert(pair);
       }
+  }
   std::vector<std::vector<size_t>> overlaps(n);
-  for (size_t a = 0; a < n; a++)
-    for (size_t b = 0; b < n; b++)
-      if (found[a * n + b]) overlaps[a].push_back(b);
+  for (uint64_t key : found) {
+    overlaps[key / n].push_back(key % n);
+    overlaps[key % n].push_back(key / n);
+  }
+  for (auto& list : overlaps) std::sort(list.begin(), list.end());
   return overlaps;
 }
 

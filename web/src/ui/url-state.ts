@@ -2,7 +2,7 @@
  * The view in the address bar, so a link restores it: `#mesh=bob&stage=skeleton&source=812&n=40`.
  * Only options that differ from the defaults are written; anything unreadable is ignored.
  */
-import { defaultOptions, OPTIONS, optionText, parseOptionText } from '../../../lib/core/options.ts';
+import { defaultOptions, OPTIONS, parseOptionText } from '../../../lib/core/options.ts';
 import type { Options } from '../../../lib/core/types.ts';
 import { isStageKey, type StageKey } from '../stage-defs.ts';
 
@@ -40,7 +40,7 @@ export function writeUrl(state: ViewState): void {
   if (state.stage) params.set('stage', state.stage);
   if (state.source !== null) params.set('source', String(state.source));
   for (const key of Object.keys(defaultOptions) as Array<keyof Options>) {
-    if (state.options[key] !== defaultOptions[key]) params.set(key, optionText(state.options[key]));
+    if (state.options[key] !== defaultOptions[key]) params.set(key, String(state.options[key]));
   }
   const hash = params.toString();
   if (hash !== location.hash.replace(/^#/, '')) history.replaceState(null, '', hash ? `#${hash}` : location.pathname + location.search);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the C++ core into build/wasm/cscd.js + cscd.wasm (an ES module factory, loadable in Node and in a
-# module Web Worker). Incremental; geometry-central's 5-7 minute build happens once per machine (cached
+# module Web Worker), and the generic pipeline's test module cscd_toy.js + .wasm. Incremental; geometry-central's 5-7 minute build happens once per machine (cached
 # outside the clone, see below).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,12 +59,14 @@ progress() {
     fi
   done
 }
-if ! cmake --build "$BUILD" --target cscd -j "$(nproc)" 2>&1 | progress; then
+# cscd_toy: the generic pipeline's test module (wasm/tests/), a few seconds more.
+if ! cmake --build "$BUILD" --target cscd cscd_toy -j "$(nproc)" 2>&1 | progress; then
   grep -E 'error|Error' "$BUILD/last-build.log" | head -20 >&2
   echo "build-wasm: the WASM core did not build; full log in $BUILD/last-build.log" >&2
   exit 1
 fi
 cp wasm/src/bindings/cscd.d.ts "$BUILD/cscd.d.ts"
+cp wasm/tests/cscd_toy.d.ts "$BUILD/cscd_toy.d.ts"
 
 # Keep a newly compiled geometry-central for the next clone (written aside, then moved into place).
 if [ -z "$use" ] && [ -f "$GC_ARCHIVE" ] && [ ! -f "$CACHED/libgeometry-central.a" ] && mkdir -p "$CACHE_ROOT" 2>/dev/null; then

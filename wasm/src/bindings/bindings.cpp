@@ -1,7 +1,7 @@
-// embind surface of the core. Arrays cross as typed arrays (one copy in, one copy out: JS owns every
-// result, so heap growth cannot invalidate it). Nothing here throws into JS: a call that fails returns
-// {coreError: kind, message} (ErrorKind below), which lib/core turns into a CoreError of that kind.
-#include "cscd/pipeline.h"
+// The core's module: the mesh functions (inspect, evaluate), the Surface of CSCD-M and its Pipeline.
+// Arrays come in as typed arrays (one copy in); conversions out and failures as values: convert.h.
+#include "bindings/convert.h"
+#include "bindings/pipeline_binding.h"
 #include "evaluate/reconstruction_error.h"
 #include "mesh/realization.h"
 #include "mesh/separator.h"
@@ -10,9 +10,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
-#include <algorithm>
 #include <cmath>
-#include <exception>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -21,36 +19,15 @@
 using namespace emscripten;
 using geometrycentral::surface::SurfacePoint;
 
+// The module's own conversions live beside convert.h's in one namespace, so that every toVal overload is seen.
 namespace cscd {
-namespace {
+namespace binding {
 
 MeshArrays toArrays(const val& positions, const val& triangles) {
   MeshArrays arrays;
   arrays.positions = convertJSArrayToNumberVector<double>(positions);
   arrays.triangles = convertJSArrayToNumberVector<uint32_t>(triangles);
   return arrays;
-}
-
-val toFloat64Array(const std::vector<double>& values) {
-  return val::global("Float64Array").new_(typed_memory_view(values.size(), values.data()));
-}
-
-template <class T>
-val toTypedArray(const char* type, const std::vector<T>& values) {
-  return val::global(type).new_(typed_memory_view(values.size(), values.data()));
-}
-
-val toFloat64Array(const std::vector<geometrycentral::Vector3>& points) {
-  std::vector<double> flat;
-  flat.reserve(3 * points.size());
-  for (const auto& p : points) flat.insert(flat.end(), {p.x, p.y, p.z});
-  return toFloat64Array(flat);
-}
-
-val toArray3(const geometrycentral::Vector3& v) {
-  val a = val::array();
-  for (double x : {v.x, v.y, v.z}) a.call<void>("push", x);
-  return a;
 }
 
 val toArray3(const std::array<double, 3>& v) {
@@ -81,88 +58,6 @@ val toVal(const MeshFacts& f) {
   return o;
 }
 
-val toVal(const std::vector<std::pair<std::string, double>>& timings) {
-  val o = val::object();
-  for (const auto& [stage, ms] : timings) o.set(stage, ms);
-  return o;
-}
-
-const OptionRange& rangeOf(const std::string& name) {
-  for (const OptionRange& range : kOptionRanges)
-    if (name == range.name) return range;
-  throw std::logic_error("no range for option " + name);
-}
-
-Options toOptions(const val& given) {
-  Options options;
-  if (given.isUndefined() || given.isNull()) return options;
-  auto number = [&](const char* name, double fallback) {
-    val v = given[name];
-    if (v.isUndefined()) return fallback;
-    const auto [_, low, high] = rangeOf(name);
-    double x = v.as<double>();
-    if (!(x >= low && x <= high)) {
-      std::ostringstream msg;
-      msg << "option " << name << " must be between " << low << " and " << high << ", got " << x;
-      throw InputError(msg.str());
-    }
-    return x;
-  };
-  if (!given["target"].isUndefined()) {
-    std::string target = given["target"].as<std::string>();
-    if (target != "euclid" && target != "geodesic")
-      throw InputError("option target must be 'euclid' or 'geodesic', got '" + target + "'");
-    options.target = target == "euclid" ? TargetMode::Euclidean : TargetMode::Geodesic;
-  }
-  if (!given["sphere"].isUndefined()) options.sphere = given["sphere"].as<bool>();
-  options.seed = uint32_t(number("seed", options.seed));
-  options.angleThreshold = number("angleThreshold", options.angleThreshold);
-  options.laplacianThreshold = number("laplacianThreshold", options.laplacianThreshold);
-  options.pruneDepth = int(number("pruneDepth", options.pruneDepth));
-  val n = given["n"];
-  if (!n.isUndefined()) {
-    if (n.isString()) {
-      if (n.as<std::string>() != "auto") throw InputError("option n must be a number of sources or 'auto'");
-      options.n = 0;
-    } else {
-      options.n = int(number("n", options.n));
-    }
-  }
-  options.pruneLengthFactor = number("pruneLengthFactor", options.pruneLengthFactor);
-  return options;
-}
-
-// The core's option defaults, ranges and auto-N constants, for the test that holds lib/core/options.ts to them.
-val optionLimits() {
-  const Options d;
-  val defaults = val::object();
-  defaults.set("target", std::string(d.target == TargetMode::Euclidean ? "euclid" : "geodesic"));
-  defaults.set("sphere", d.sphere);
-  defaults.set("seed", d.seed);
-  defaults.set("angleThreshold", d.angleThreshold);
-  defaults.set("laplacianThreshold", d.laplacianThreshold);
-  defaults.set("pruneDepth", d.pruneDepth);
-  defaults.set("n", d.n == 0 ? val("auto") : val(d.n));
-  defaults.set("pruneLengthFactor", d.pruneLengthFactor);
-  val ranges = val::object();
-  for (const OptionRange& range : kOptionRanges) {
-    val pair = val::array();
-    pair.call<void>("push", range.low);
-    pair.call<void>("push", range.high);
-    ranges.set(range.name, pair);
-  }
-  val autoN = val::object();
-  autoN.set("covered", kAutoCovered);
-  autoN.set("window", double(kAutoWindow));
-  autoN.set("minGain", kAutoMinGain);
-  autoN.set("max", double(kMaxAutoSources));
-  val limits = val::object();
-  limits.set("defaults", defaults);
-  limits.set("ranges", ranges);
-  limits.set("autoN", autoN);
-  return limits;
-}
-
 val toVal(const SeparatorResult& r, Surface& surface) {
   val o = val::object();
   o.set("source", r.source);
@@ -176,12 +71,11 @@ val toVal(const SeparatorResult& r, Surface& surface) {
     return toFloat64Array(p);
   };
   const CutLocus& c = r.cutLocus;
-  std::vector<uint32_t> vertices(c.vertices.begin(), c.vertices.end()), edges;
-  for (const auto& e : c.edges) edges.insert(edges.end(), {uint32_t(e[0]), uint32_t(e[1])});
+  std::vector<uint32_t> vertices(c.vertices.begin(), c.vertices.end());
   val cutLocus = val::object();
   cutLocus.set("vertices", toTypedArray("Uint32Array", vertices));
   cutLocus.set("points", positionsOf(c.vertices));
-  cutLocus.set("edges", toTypedArray("Uint32Array", edges));
+  cutLocus.set("edges", toPairArray(c.edges));
   cutLocus.set("angleDeviation", toFloat64Array(c.angleDeviation));
   cutLocus.set("laplacian", toFloat64Array(c.laplacian));
   cutLocus.set("root", c.root);
@@ -224,102 +118,6 @@ val toVal(const SeparatorResult& r, Surface& surface) {
   o.set("centroidInside", r.centroidInside);
   o.set("timings", toVal(r.timings));
   return o;
-}
-
-const char* fateName(Fate fate) {
-  switch (fate) {
-  case Fate::Packed: return "packed";
-  case Fate::Overlapping: return "overlapping";
-  case Fate::Short: return "short";
-  case Fate::Outside: return "outside";
-  case Fate::Failed: return "failed";
-  }
-  return "failed";
-}
-
-val toVal(const Skeleton& skeleton, const Options& options) {
-  const SkeletonGraph& g = skeleton.graph;
-  val o = val::object();
-  o.set("nodes", toFloat64Array(g.nodes));
-  o.set("radii", toFloat64Array(g.radii));
-  std::vector<uint32_t> edges;
-  for (const auto& e : g.edges) edges.insert(edges.end(), {uint32_t(e[0]), uint32_t(e[1])});
-  o.set("edges", toTypedArray("Uint32Array", edges));
-  o.set("vertexToNode", toTypedArray("Uint32Array", skeleton.vertexToNode));
-
-  std::vector<uint32_t> sources;
-  std::vector<double> scores;
-  std::vector<uint8_t> closed;
-  val loops = val::array(), fates = val::array();
-  for (size_t i = 0; i < skeleton.candidates.size(); i++) {
-    const Candidate& c = skeleton.candidates[i];
-    sources.push_back(uint32_t(c.source));
-    scores.push_back(c.score);
-    closed.push_back(c.closed);
-    loops.call<void>("push", toFloat64Array(c.loop));
-    fates.call<void>("push", std::string(fateName(skeleton.fates[i])));
-  }
-  val candidates = val::object();
-  candidates.set("sources", toTypedArray("Uint32Array", sources));
-  candidates.set("loops", loops);
-  candidates.set("closed", toTypedArray("Uint8Array", closed));
-  candidates.set("scores", toFloat64Array(scores));
-  candidates.set("fates", fates);
-  o.set("candidates", candidates);
-  std::vector<uint32_t> packed(skeleton.packed.begin(), skeleton.packed.end());
-  o.set("packed", toTypedArray("Uint32Array", packed));
-
-  val stats = val::object();
-  stats.set("n", skeleton.candidates.size());
-  stats.set("candidates", size_t(std::count_if(skeleton.candidates.begin(), skeleton.candidates.end(),
-                                               [](const Candidate& c) { return c.found; })));
-  stats.set("pruned", skeleton.pruned);
-  stats.set("packed", skeleton.packed.size());
-  stats.set("cycles", g.cycleRank());
-  stats.set("seed", options.seed);
-  stats.set("timings", toVal(skeleton.timings));
-  o.set("stats", stats);
-  return o;
-}
-
-// What went wrong, as the caller can act on it: its input or arguments (InputError), the heap (a failed
-// allocation), or anything else (a library's failure or a bug).
-enum class ErrorKind { Input, Memory, Internal };
-
-struct Failure {
-  ErrorKind kind;
-  std::string message;
-};
-
-Failure failureOf(std::exception_ptr error) {
-  try {
-    std::rethrow_exception(error);
-  } catch (const std::bad_alloc&) {
-    return {ErrorKind::Memory, "out of memory: the mesh is too large for the WebAssembly heap"};
-  } catch (const InputError& e) {
-    return {ErrorKind::Input, e.what()};
-  } catch (const std::exception& e) {
-    return {ErrorKind::Internal, e.what()};
-  } catch (...) {
-    return {ErrorKind::Internal, "the core failed with an unknown error"};
-  }
-}
-
-val toVal(const Failure& failure) {
-  static const char* const kNames[] = {"input", "memory", "internal"};
-  val o = val::object();
-  o.set("coreError", std::string(kNames[int(failure.kind)]));
-  o.set("message", failure.message);
-  return o;
-}
-
-template <class Body>
-val reportingErrors(Body&& body) {
-  try {
-    return body();
-  } catch (...) {
-    return toVal(failureOf(std::current_exception()));
-  }
 }
 
 val inspect(const val& positions, const val& triangles) {
@@ -384,6 +182,9 @@ public:
 
   val error() const { return failure ? toVal(*failure) : val::null(); }
 
+  // The shape a Pipeline runs on (null when it could not be opened).
+  Surface* shape() const { return surface.get(); }
+
   val facts() const { return surface ? toVal(surface->facts()) : val::null(); }
 
   val distanceFromVertex(double vertex) {
@@ -438,63 +239,14 @@ private:
 
   std::unique_ptr<Surface> surface;
   std::optional<Failure> failure;
-  friend class PipelineBinding;
 };
 
-// The whole pipeline as a resumable job over a surface (which must outlive it).
-class PipelineBinding {
-public:
-  PipelineBinding(SurfaceBinding& surface, const val& options) {
-    try {
-      if (!surface.surface) throw InputError("the surface could not be opened");
-      settings = toOptions(options);
-      realization = std::make_unique<MeshRealization>(*surface.surface, settings);
-      pipeline = std::make_unique<MeshPipeline>(*realization, settings);
-    } catch (...) {
-      failure = failureOf(std::current_exception());
-    }
-  }
-
-  val error() const { return failure ? toVal(*failure) : val::null(); }
-
-  val step(double count) {
-    return reportingErrors([&] {
-      size_t before = loopsReported;
-      Progress progress = pipeline->step(size_t(std::max(1.0, count)));
-      val newLoops = val::array();
-      std::vector<uint8_t> newClosed;
-      for (size_t i = before; i < progress.done; i++) {
-        newLoops.call<void>("push", toFloat64Array(realization->loop(i)));
-        newClosed.push_back(realization->closedAt(i));
-      }
-      loopsReported = progress.done;
-      val o = val::object();
-      o.set("done", progress.done);
-      o.set("total", progress.total);
-      o.set("finished", progress.finished);
-      o.set("newLoops", newLoops);
-      o.set("newClosed", toTypedArray("Uint8Array", newClosed));
-      return o;
-    });
-  }
-
-  val finish() {
-    return reportingErrors([&] { return toVal(pipeline->finish(), settings); });
-  }
-
-private:
-  Options settings;
-  std::unique_ptr<MeshRealization> realization;
-  std::unique_ptr<MeshPipeline> pipeline;
-  size_t loopsReported = 0;
-  std::optional<Failure> failure;
-};
-
-} // namespace
+} // namespace binding
 } // namespace cscd
 
 EMSCRIPTEN_BINDINGS(cscd) {
   using namespace cscd;
+  using namespace cscd::binding;
   function("inspect", &inspect);
   function("evaluate", &evaluate);
   function("optionLimits", &optionLimits); // test-only: tests/unit/options.test.ts
@@ -506,9 +258,5 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("exactDistanceFromVertex", &SurfaceBinding::exactDistanceFromVertex)
       .function("separator", &SurfaceBinding::separator)
       .function("distanceFromPoints", &SurfaceBinding::distanceFromPoints);
-  class_<PipelineBinding>("Pipeline")
-      .constructor<SurfaceBinding&, const val&>()
-      .function("error", &PipelineBinding::error)
-      .function("step", &PipelineBinding::step)
-      .function("finish", &PipelineBinding::finish);
+  bindPipeline<MeshRealization, SurfaceBinding>("Pipeline");
 }

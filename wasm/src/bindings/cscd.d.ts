@@ -1,5 +1,5 @@
-// Types of the embind module built from wasm/src/bindings/bindings.cpp (copied next to the generated
-// build/wasm/cscd.js by scripts/build-wasm.sh). Failing calls return a CoreFailure instead of their result.
+// Types of the embind module built from wasm/src/bindings/ (bindings.cpp registers it; copied next to
+// the generated build/wasm/cscd.js by scripts/build-wasm.sh). Failing calls return a CoreFailure instead of their result.
 
 /** What a failing call returns: the kind of failure (input, memory, internal) and a message for the user. */
 export interface CoreFailure {

@@ -1,15 +1,17 @@
 #pragma once
 
 // The CSCD framework (paper Alg. 1), independent of the shape's representation. A Realization (CSCD-M:
-// MeshRealization in mesh/realization.h) supplies the representation-specific steps:
+// MeshRealization in mesh/realization.h) supplies the representation-specific steps; its Candidate is a
+// cscd::Candidate with whatever the realization needs to remember of a separator (on a mesh, the loop's
+// surface points). The pipeline owns the candidates and hands them to the steps that need them:
 //   Candidate separator(size_t source)          stage 1 from one source (Alg. 2)
 //   size_t nextSource()                         adaptive sampling (Sec. 4.1.7)
-//   void cover(size_t candidate)                what the candidate's source and loop now cover
+//   void cover(const Candidate& c)              what the candidate's source and loop now cover
 //   double coverage()                           share of the shape near what is covered
 //   double resolution()                         mean sample spacing (edge length)
-//   std::vector<std::vector<size_t>> overlaps(const std::vector<size_t>& candidates)
-//   Regions regions(const std::vector<size_t>& packed)
-//   void centre(SkeletonGraph& graph, const std::vector<size_t>& packed)   region and branch node positions
+//   std::vector<std::vector<size_t>> overlaps(const Selection<Candidate>& kept)   overlap graph of kept
+//   Regions regions(const Selection<Candidate>& packed)
+//   void centre(SkeletonGraph& graph, const Selection<Candidate>& packed)   region and branch node positions
 //   const Samples& samples()                    the shape's elements, their areas and neighbours
 //   bool inside(const Vector3& p)               whether p lies inside the shape (for closed separators)
 //   void fitRadii(SkeletonGraph& graph)         node radii fitted to the shape around the final skeleton
@@ -41,13 +43,17 @@ struct Candidate {
   bool centroidInside = false;
 };
 
+// Some of the pipeline's candidates, in the order a step works on them (stage 2: the kept, the packed).
+template <class C>
+using Selection = std::vector<const C*>;
+
 enum class Fate { Packed, Overlapping, Short, Outside, Failed };
 
+// Stage 2's result; the candidates it speaks of stay with the pipeline (Pipeline::candidates()).
 struct Skeleton {
   SkeletonGraph graph;
   std::vector<uint32_t> vertexToNode; // per element of the shape: its region's node
-  std::vector<Candidate> candidates;
-  std::vector<Fate> fates;
+  std::vector<Fate> fates;            // per candidate
   std::vector<size_t> packed; // candidate indices; packed separator i owns region i (its vertices nearest to it)
   size_t pruned = 0;
   std::vector<std::pair<std::string, double>> timings; // milliseconds per stage
@@ -80,17 +86,18 @@ inline double separatorRadius(const Candidate& c) { return c.length / (c.closed 
 // the signature the pipeline calls it with.
 template <class R>
 struct IsRealization {
+  using C = typename R::Candidate;
   static constexpr bool value =
-      std::is_same_v<decltype(std::declval<R&>().separator(size_t())), Candidate> &&
+      std::is_base_of_v<Candidate, C> && std::is_same_v<decltype(std::declval<R&>().separator(size_t())), C> &&
       std::is_convertible_v<decltype(std::declval<R&>().nextSource()), size_t> &&
-      std::is_void_v<decltype(std::declval<R&>().cover(size_t()))> &&
+      std::is_void_v<decltype(std::declval<R&>().cover(std::declval<const C&>()))> &&
       std::is_convertible_v<decltype(std::declval<R&>().coverage()), double> &&
       std::is_convertible_v<decltype(std::declval<R&>().resolution()), double> &&
-      std::is_same_v<decltype(std::declval<R&>().overlaps(std::declval<const std::vector<size_t>&>())),
+      std::is_same_v<decltype(std::declval<R&>().overlaps(std::declval<const Selection<C>&>())),
                      std::vector<std::vector<size_t>>> &&
-      std::is_same_v<decltype(std::declval<R&>().regions(std::declval<const std::vector<size_t>&>())), Regions> &&
+      std::is_same_v<decltype(std::declval<R&>().regions(std::declval<const Selection<C>&>())), Regions> &&
       std::is_void_v<decltype(std::declval<R&>().centre(std::declval<SkeletonGraph&>(),
-                                                         std::declval<const std::vector<size_t>&>()))> &&
+                                                         std::declval<const Selection<C>&>()))> &&
       std::is_same_v<decltype(std::declval<R&>().samples()), const Samples&> &&
       std::is_convertible_v<decltype(std::declval<R&>().inside(std::declval<const geometrycentral::Vector3&>())), bool> &&
       std::is_void_v<decltype(std::declval<R&>().fitRadii(std::declval<SkeletonGraph&>()))>;
@@ -102,19 +109,24 @@ class Pipeline {
                 "a Realization needs every step listed at the top of cscd/pipeline.h, with those signatures");
 
 public:
+  using Candidate = typename Realization::Candidate;
+
   Pipeline(Realization& realization, const Options& options) : realization(realization), options(options) {}
+
+  // Every candidate of stage 1 so far, in draw order (stage 2 keeps them: its fates index them).
+  const std::vector<Candidate>& candidates() const { return drawn; }
 
   // Stage 1 for up to `count` more sources.
   Progress step(size_t count) {
     auto start = std::chrono::steady_clock::now();
     for (size_t k = 0; k < count && !done; k++) {
-      candidates.push_back(realization.separator(realization.nextSource()));
-      realization.cover(candidates.size() - 1);
+      drawn.push_back(realization.separator(realization.nextSource()));
+      realization.cover(drawn.back());
       coverageHistory.push_back(realization.coverage());
-      done = options.n > 0 ? candidates.size() >= size_t(options.n) : autoSaturated();
+      done = options.n > 0 ? drawn.size() >= size_t(options.n) : autoSaturated();
     }
     stage1Ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return {candidates.size(), done ? candidates.size() : total(), done};
+    return {drawn.size(), done ? drawn.size() : total(), done};
   }
 
   // Stage 2 (after the remaining sources of stage 1): prune, pack, regions, graph, clique to star.
@@ -124,11 +136,11 @@ public:
     skeleton.timings.emplace_back("separators", stage1Ms);
     StageClock clock(skeleton.timings);
 
-    skeleton.fates.assign(candidates.size(), Fate::Overlapping);
+    skeleton.fates.assign(drawn.size(), Fate::Overlapping);
     std::vector<size_t> kept;
     const double shortest = options.pruneLengthFactor * realization.resolution();
-    for (size_t i = 0; i < candidates.size(); i++) {
-      const Candidate& c = candidates[i];
+    for (size_t i = 0; i < drawn.size(); i++) {
+      const Candidate& c = drawn[i];
       Fate& fate = skeleton.fates[i];
       fate = !c.found ? Fate::Failed : c.length < shortest ? Fate::Short : !c.centroidInside ? Fate::Outside : fate;
       if (fate == Fate::Overlapping) kept.push_back(i);
@@ -136,16 +148,17 @@ public:
     }
     clock.lap("prune");
 
-    std::vector<std::vector<size_t>> overlaps = realization.overlaps(kept);
+    std::vector<std::vector<size_t>> overlaps = realization.overlaps(select(kept));
     std::vector<double> scores;
-    for (size_t i : kept) scores.push_back(candidates[i].score);
+    for (size_t i : kept) scores.push_back(drawn[i].score);
     for (size_t j : packSeparators(scores, overlaps)) {
       skeleton.packed.push_back(kept[j]);
       skeleton.fates[kept[j]] = Fate::Packed;
     }
     clock.lap("pack");
 
-    Regions regions = realization.regions(skeleton.packed);
+    const Selection<Candidate> packed = select(skeleton.packed);
+    Regions regions = realization.regions(packed);
     clock.lap("regions");
 
     SkeletonGraph& graph = skeleton.graph;
@@ -153,27 +166,29 @@ public:
     graph.weights = regions.area;
     graph.edges.assign(regions.adjacent.begin(), regions.adjacent.end());
     cliquesToStars(graph, regions.junctions);
-    realization.centre(graph, skeleton.packed);
+    realization.centre(graph, packed);
     clock.lap("graph");
 
     std::vector<double> width(regions.count, 0);
     std::vector<char> solid(regions.count, 0);
-    for (size_t r = 0; r < skeleton.packed.size(); r++) {
-      const Candidate& c = candidates[skeleton.packed[r]];
-      width[r] = kBandWidth * separatorRadius(c);
-      solid[r] = c.closed;
+    for (size_t r = 0; r < packed.size(); r++) {
+      width[r] = kBandWidth * separatorRadius(*packed[r]);
+      solid[r] = packed[r]->closed;
     }
     skeleton.vertexToNode = refineIntoBands(graph, regions, realization.samples(), width, solid,
                                             [&](const geometrycentral::Vector3& p) { return realization.inside(p); });
     realization.fitRadii(graph);
     clock.lap("bands");
-
-    skeleton.candidates = std::move(candidates);
-    candidates.clear();
     return skeleton;
   }
 
 private:
+  Selection<Candidate> select(const std::vector<size_t>& indices) const {
+    Selection<Candidate> selection;
+    for (size_t i : indices) selection.push_back(&drawn[i]);
+    return selection;
+  }
+
   size_t total() const { return options.n > 0 ? size_t(options.n) : kMaxAutoSources; }
 
   bool autoSaturated() const {
@@ -184,7 +199,7 @@ private:
 
   Realization& realization;
   Options options;
-  std::vector<Candidate> candidates;
+  std::vector<Candidate> drawn;
   std::vector<double> coverageHistory;
   double stage1Ms = 0;
   bool done = false;

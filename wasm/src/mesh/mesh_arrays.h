@@ -1,8 +1,9 @@
 #pragma once
 
+#include "cscd/errors.h"
+
 #include <cstddef>
 #include <cstdint>
-#include <stdexcept>
 #include <vector>
 
 namespace cscd {
@@ -14,12 +15,6 @@ struct MeshArrays {
 
   size_t vertexCount() const { return positions.size() / 3; }
   size_t faceCount() const { return triangles.size() / 3; }
-};
-
-// Input the core cannot work with; the message is written for the user.
-class InputError : public std::runtime_error {
-public:
-  using std::runtime_error::runtime_error;
 };
 
 } // namespace cscd

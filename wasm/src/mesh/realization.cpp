@@ -17,50 +17,45 @@ constexpr double kOverlapTolerance = 1.0;
 MeshRealization::MeshRealization(Surface& surface_, const Options& options_)
     : surface(surface_), options(options_), sampler(surface_, options_.seed) {}
 
-Candidate MeshRealization::separator(size_t source) {
+MeshRealization::Candidate MeshRealization::separator(size_t source) {
   SeparatorResult result = computeSeparator(surface, source, options, /*everyAngle=*/false);
   Candidate candidate;
   candidate.source = source;
   candidate.found = result.status == SeparatorStatus::Ok;
-  candidate.loop = result.loop;
+  candidate.loop = std::move(result.loop);
   candidate.closed = result.closed;
   candidate.length = result.length;
   candidate.score = result.score;
   candidate.centroidInside = result.centroidInside;
-  sources.push_back(source);
-  loops.push_back(std::move(result.loop));
-  loopPoints.push_back(std::move(result.loopPoints));
-  closed.push_back(result.closed);
+  candidate.points = std::move(result.loopPoints);
   return candidate;
 }
 
-void MeshRealization::cover(size_t candidate) { sampler.cover(sources[candidate], loopPoints[candidate]); }
-
 double MeshRealization::coverage() const { return sampler.coverage(kCoverageRadius * surface.facts().bboxDiagonal); }
 
-std::vector<std::vector<size_t>> MeshRealization::overlaps(const std::vector<size_t>& candidates) const {
-  std::vector<std::vector<geometrycentral::Vector3>> selected;
-  std::vector<char> selectedClosed;
-  for (size_t c : candidates) {
-    selected.push_back(loops[c]);
-    selectedClosed.push_back(closed[c]);
+std::vector<std::vector<size_t>> MeshRealization::overlaps(const Selection<Candidate>& kept) const {
+  std::vector<std::vector<geometrycentral::Vector3>> loops;
+  std::vector<char> closed;
+  for (const Candidate* c : kept) {
+    loops.push_back(c->loop);
+    closed.push_back(c->closed);
   }
-  return overlappingLoops(selected, selectedClosed, kOverlapTolerance * surface.facts().meanEdgeLength);
+  return overlappingLoops(loops, closed, kOverlapTolerance * surface.facts().meanEdgeLength);
 }
 
-Regions MeshRealization::regions(const std::vector<size_t>& packed) {
-  std::vector<std::vector<geometrycentral::surface::SurfacePoint>> selected;
-  for (size_t c : packed) selected.push_back(loopPoints[c]);
-  return assignRegions(surface, selected);
+Regions MeshRealization::regions(const Selection<Candidate>& packed) {
+  std::vector<std::vector<geometrycentral::surface::SurfacePoint>> points;
+  for (const Candidate* c : packed) points.push_back(c->points);
+  return assignRegions(surface, points);
 }
 
-geometrycentral::Vector3 MeshRealization::separatorNormal(size_t candidate) const {
-  if (closed[candidate]) return loopNormal(loops[candidate]);
+geometrycentral::Vector3 MeshRealization::separatorNormal(const Candidate& candidate) const {
+  if (candidate.closed) return loopNormal(candidate.loop);
   auto& geometry = surface.geometry();
   geometry.requireFaceNormals();
   geometrycentral::Vector3 surfaceNormal{0, 0, 0};
-  for (const auto& p : loopPoints[candidate]) surfaceNormal += geometry.faceNormals[p.inSomeFace().face];
-  return pathNormal(loops[candidate], surfaceNormal);
+  for (const auto& p : candidate.points) surfaceNormal += geometry.faceNormals[p.inSomeFace().face];
+  return pathNormal(candidate.loop, surfaceNormal);
 }
 
 bool MeshRealization::inside(const geometrycentral::Vector3& p) const { return surface.winding()(p) > 0.5; }
@@ -78,12 +73,12 @@ const Samples& MeshRealization::samples() {
   return vertexSamples;
 }
 
-void MeshRealization::centre(SkeletonGraph& graph, const std::vector<size_t>& packed) const {
+void MeshRealization::centre(SkeletonGraph& graph, const Selection<Candidate>& packed) const {
   for (size_t node = 0; node < packed.size(); node++) {
-    const size_t c = packed[node];
-    geometrycentral::Vector3 centroid = loopCentroid(loops[c], closed[c]), n = separatorNormal(c);
+    const Candidate& c = *packed[node];
+    geometrycentral::Vector3 centroid = loopCentroid(c.loop, c.closed), n = separatorNormal(c);
     graph.nodes[node] = centroid + dot(graph.nodes[node] - centroid, n) * n;
-    if (closed[c] && !inside(graph.nodes[node])) graph.nodes[node] = centroid;
+    if (c.closed && !inside(graph.nodes[node])) graph.nodes[node] = centroid;
   }
   for (size_t node = packed.size(); node < graph.nodes.size(); node++) {
     if (graph.weights[node] != 0) continue;
@@ -92,7 +87,7 @@ void MeshRealization::centre(SkeletonGraph& graph, const std::vector<size_t>& pa
     for (const auto& e : graph.edges) {
       size_t other = e[0] == node ? e[1] : e[1] == node ? e[0] : SIZE_MAX;
       if (other == SIZE_MAX) continue;
-      nextToPath = nextToPath || (other < packed.size() && !closed[packed[other]]);
+      nextToPath = nextToPath || (other < packed.size() && !packed[other]->closed);
       if (heaviest == SIZE_MAX || graph.weights[other] > graph.weights[heaviest]) heaviest = other;
     }
     if (heaviest != SIZE_MAX && !nextToPath && !inside(graph.nodes[node])) graph.nodes[node] = graph.nodes[heaviest];

@@ -11,15 +11,20 @@ namespace cscd {
 // CSCD-M: the representation-specific steps of the pipeline on a triangle mesh.
 class MeshRealization {
 public:
+  // A separator on the mesh: the loop also as points on the surface, where regions and coverage grow from.
+  struct Candidate : cscd::Candidate {
+    std::vector<geometrycentral::surface::SurfacePoint> points;
+  };
+
   MeshRealization(Surface& surface, const Options& options);
 
   Candidate separator(size_t source);
   size_t nextSource() { return sampler.next(); }
-  void cover(size_t candidate);
+  void cover(const Candidate& candidate) { sampler.cover(candidate.source, candidate.points); }
   double coverage() const;
   double resolution() const { return surface.facts().meanEdgeLength; }
-  std::vector<std::vector<size_t>> overlaps(const std::vector<size_t>& candidates) const;
-  Regions regions(const std::vector<size_t>& packed);
+  std::vector<std::vector<size_t>> overlaps(const Selection<Candidate>& kept) const;
+  Regions regions(const Selection<Candidate>& packed);
   // A separator's node keeps its region centroid's position along the loop's normal (so end regions
   // reach towards their tips) but takes the loop centroid's position across it: on a bent tube the
   // outer side has more area and drags the region centroid outwards (by r^2 / 2R on a torus), while
@@ -28,7 +33,7 @@ public:
   // branch node outside moves to its heaviest neighbour's position.
   // A path across a sheet (open separator) has no inside: its node keeps the region centroid along the
   // path's normal and the path centroid across it, and so do junctions next to such paths.
-  void centre(SkeletonGraph& graph, const std::vector<size_t>& packed) const;
+  void centre(SkeletonGraph& graph, const Selection<Candidate>& packed) const;
   // The vertices, their dual areas and the mesh edges.
   const Samples& samples();
   bool inside(const geometrycentral::Vector3& p) const;
@@ -36,21 +41,13 @@ public:
   // skeletons: the mean distance to a whole region overestimates a long region's tube.
   void fitRadii(SkeletonGraph& graph) const;
 
-  // The loop of a candidate as the last stage-1 call produced it (for progressive display).
-  const std::vector<geometrycentral::Vector3>& loop(size_t candidate) const { return loops[candidate]; }
-  bool closedAt(size_t candidate) const { return closed[candidate]; }
-
 private:
   // A loop's normal, or for a path its direction across the sheet (measures.h).
-  geometrycentral::Vector3 separatorNormal(size_t candidate) const;
+  geometrycentral::Vector3 separatorNormal(const Candidate& candidate) const;
 
   Surface& surface;
   Options options;
   SourceSampler sampler;
-  std::vector<size_t> sources;
-  std::vector<std::vector<geometrycentral::Vector3>> loops;
-  std::vector<std::vector<geometrycentral::surface::SurfacePoint>> loopPoints;
-  std::vector<char> closed;
   Samples vertexSamples;
 };
 

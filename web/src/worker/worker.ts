@@ -223,23 +223,19 @@ function finiteMax(values: ArrayLike<number>): number {
   return max;
 }
 
-const f32 = (a: ArrayLike<number> | null | undefined) => Float32Array.from(a ?? []);
+const f32 = (a: ArrayLike<number>) => Float32Array.from(a);
 
-/** Float32 copies of every array of a Separator (fresh buffers, safe to transfer). */
+/**
+ * A Separator for the page: Float32 copies of its coordinates and fields; its index arrays are the
+ * core's own copies (the worker keeps no separator), so they are transferred as they are.
+ */
 function toWire(s: Separator): SeparatorData {
   const c = s.cutLocus;
   return {
     ...s,
     distance: f32(s.distance),
-    cutLocus: {
-      ...c,
-      vertices: Uint32Array.from(c.vertices ?? []),
-      edges: Uint32Array.from(c.edges ?? []),
-      points: f32(c.points),
-      angleDeviation: f32(c.angleDeviation),
-      laplacian: f32(c.laplacian),
-    },
-    paths: [f32(s.paths?.[0]), f32(s.paths?.[1])],
+    cutLocus: { ...c, points: f32(c.points), angleDeviation: f32(c.angleDeviation), laplacian: f32(c.laplacian) },
+    paths: [f32(s.paths[0]), f32(s.paths[1])],
     approxLoop: f32(s.approxLoop),
     loop: f32(s.loop),
     timings: { ...s.timings },
@@ -296,21 +292,17 @@ function nextStepSize(k: number, ms: number): number {
   return Math.max(1, Math.min(scaled, k * 4, STEP_MAX_SOURCES));
 }
 
+/** A Skeleton for the page: copies of every array, since the worker keeps the skeleton (evaluate, export). */
 function skeletonToWire(s: Skeleton): SkeletonData {
+  const c = s.candidates;
   return {
     ...s,
     nodes: f32(s.nodes),
     radii: f32(s.radii),
-    edges: Uint32Array.from(s.edges ?? []),
-    vertexToNode: Uint32Array.from(s.vertexToNode ?? []),
-    packed: Uint32Array.from(s.packed ?? []),
-    candidates: {
-      sources: Uint32Array.from(s.candidates.sources ?? []),
-      loops: (s.candidates.loops ?? []).map(f32),
-      closed: Uint8Array.from(s.candidates.closed ?? []),
-      scores: Float64Array.from(s.candidates.scores ?? []),
-      fates: [...(s.candidates.fates ?? [])],
-    },
+    edges: s.edges.slice(),
+    vertexToNode: s.vertexToNode.slice(),
+    packed: s.packed.slice(),
+    candidates: { sources: c.sources.slice(), loops: c.loops.map(f32), closed: c.closed.slice(), scores: c.scores.slice(), fates: [...c.fates] },
     stats: { ...s.stats, timings: { ...s.stats.timings } },
   };
 }
@@ -335,8 +327,8 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
       const ms = performance.now() - t;
       stage1Ms += ms;
       steps++;
-      const newLoops = (p.newLoops ?? []).map(f32);
-      const newClosed = Uint8Array.from(p.newClosed ?? []);
+      const newLoops = p.newLoops.map(f32);
+      const { newClosed } = p;
       post(
         {
           type: 'progress',

@@ -1,7 +1,7 @@
 // Behaviour that a change must not alter, checked: the skeleton JSON of shared meshes at a fixed n,
 // timings taken out, written to a folder; two folders compared file by file.
 //
-//   node --import tsx scripts/snapshot-skeletons.ts write <folder> [--n 40] [meshes...]
+//   node --import tsx scripts/snapshot-skeletons.ts write <folder> [--n 40] [--set option=value ...] [meshes...]
 //   node --import tsx scripts/snapshot-skeletons.ts compare <before> <after>
 //
 // Default meshes: every ../shared/data/meshes/*.ply and ../shared/data/synthetic/*.ply. Write the
@@ -12,14 +12,26 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { loadCoreNode } from '../lib/core/node.ts';
-import { defaultOptions } from '../lib/core/options.ts';
+import { defaultOptions, OPTIONS, parseOptionText } from '../lib/core/options.ts';
+import type { Options } from '../lib/core/types.ts';
 import { parseMesh } from '../lib/io/index.ts';
 import { writeSkeletonJson } from '../lib/io/skeleton.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const folders = ['meshes', 'synthetic'].map((f) => path.resolve(repoRoot, '..', 'shared', 'data', f));
 
-const { positionals, values } = parseArgs({ allowPositionals: true, options: { n: { type: 'string', default: '40' } } });
+const { positionals, values } = parseArgs({
+  allowPositionals: true,
+  options: { n: { type: 'string', default: '40' }, set: { type: 'string', multiple: true, default: [] } },
+});
+/** --set roundSize=1 and the like: any option, read as the address bar reads it. */
+const overrides: Partial<Options> = Object.fromEntries(values.set.map((pair) => {
+  const [key, text] = pair.split('=');
+  const spec = OPTIONS.find((o) => o.key === key);
+  const value = spec && text !== undefined ? parseOptionText(spec as never, text) : null;
+  if (value === null) throw new Error(`--set ${pair}: not an option and a value it accepts`);
+  return [key, value];
+}));
 const [command, ...rest] = positionals;
 
 if (command === 'write') {
@@ -33,9 +45,9 @@ if (command === 'write') {
     const mesh = parseMesh(readFileSync(file), file);
     const surface = core.openRefinedSurface(mesh);
     try {
-      const skeleton = surface.skeleton({ n });
+      const skeleton = surface.skeleton({ ...overrides, n });
       skeleton.stats.timings = {};
-      writeFileSync(path.join(out, `${path.basename(file)}.json`), writeSkeletonJson(skeleton, { mesh: path.basename(file), options: { ...defaultOptions, n } }));
+      writeFileSync(path.join(out, `${path.basename(file)}.json`), writeSkeletonJson(skeleton, { mesh: path.basename(file), options: { ...defaultOptions, ...overrides, n } }));
       process.stdout.write(`wrote ${path.basename(file)}\n`);
     } finally {
       surface.dispose();

@@ -4,6 +4,7 @@ import createCscdModule, { type CoreFailure, type CscdModule, type CscdModuleOpt
 import { refine, refinedPoint, refinementOf, skeletonForInput } from '../mesh/refine.ts';
 import {
   CoreError,
+  type CandidateRecord,
   type Core,
   type Evaluation,
   type MeshArrays,
@@ -57,6 +58,18 @@ class WasmPipeline implements Pipeline {
 
   step(sources: number): PipelineProgress {
     return this.unwrap(this.live().step(sources)) as PipelineProgress;
+  }
+
+  drawRound(): Uint32Array {
+    return this.unwrap(this.live().drawRound());
+  }
+
+  separators(sources: Uint32Array): CandidateRecord[] {
+    return this.unwrap(this.live().separators(sources)) as CandidateRecord[];
+  }
+
+  accept(records: CandidateRecord[]): PipelineProgress {
+    return this.unwrap(this.live().accept(records)) as PipelineProgress;
   }
 
   finish(): Skeleton {
@@ -149,6 +162,18 @@ class RefinedPipeline implements Pipeline {
 
   step(sources: number): PipelineProgress {
     return this.inner.step(sources);
+  }
+
+  drawRound(): Uint32Array {
+    return this.inner.drawRound();
+  }
+
+  separators(sources: Uint32Array): CandidateRecord[] {
+    return this.inner.separators(sources);
+  }
+
+  accept(records: CandidateRecord[]): PipelineProgress {
+    return this.inner.accept(records);
   }
 
   finish(): Skeleton {

@@ -29,7 +29,7 @@ interface Common<K extends keyof Options> {
 export type OptionSpec =
   | (Common<'target'> & { kind: 'choice'; /** each value with its label in the panel */ choices: Readonly<Record<Options['target'], string>> })
   | (Common<'sphere'> & { kind: 'switch' })
-  | (Common<'seed' | 'pruneDepth'> & { kind: 'integer'; range: readonly [number, number]; placeholder: string })
+  | (Common<'seed' | 'pruneDepth' | 'roundSize'> & { kind: 'integer'; range: readonly [number, number]; placeholder: string })
   | (Common<'angleThreshold' | 'laplacianThreshold' | 'pruneLengthFactor'> & {
       kind: 'number';
       range: readonly [number, number];
@@ -76,6 +76,10 @@ export const OPTIONS: readonly OptionSpec[] = Object.freeze([
     key: 'pruneLengthFactor', flag: 'prune-length-factor', stage: 'skeleton', commands: 'skeleton', kind: 'number', default: 3, range: [0, 1000],
     placeholder: 'X', step: 0.5,
     help: 'loops shorter than this many mean edge lengths enclose no feature and are pruned (paper Sec. 4.2.2)',
+  },
+  {
+    key: 'roundSize', flag: 'round-size', stage: 'skeleton', commands: 'skeleton', kind: 'integer', default: 8, range: [1, 256], placeholder: 'K',
+    help: 'sources drawn at once in stage 1, their separators computed together (in parallel by workers): the skeleton depends on it, not on the number of workers',
   },
 ] satisfies OptionSpec[]);
 

@@ -71,6 +71,8 @@ export interface Options {
   n: number | 'auto';
   /** Prune: loops shorter than this many mean edge lengths enclose no feature (paper Sec. 4.2.2). */
   pruneLengthFactor: number;
+  /** Sources drawn at once in stage 1; their separators are computed together (by a pool of workers). */
+  roundSize: number;
 }
 
 /** Why stage 1 produced no separator for a source ('ok' when it did). */
@@ -200,11 +202,36 @@ export interface PipelineProgress {
 }
 
 /**
+ * A stage-1 candidate as it crosses from the worker that computed it to the pipeline that draws the
+ * rounds: exact (the same bits whichever worker computed it). `points` is the realization's own part
+ * (on a mesh: the loop's surface points as element kind, index and coordinates).
+ */
+export interface CandidateRecord {
+  source: number;
+  found: boolean;
+  loop: Polyline;
+  closed: boolean;
+  length: number;
+  score: number;
+  centroidInside: boolean;
+  points?: { kinds: Uint8Array; elements: Uint32Array; coords: Float64Array };
+}
+
+/**
  * The whole CSCD-M pipeline as a resumable job: `step` runs a few sources of stage 1 (so callers can
  * report progress and cancel between steps), `finish` runs stage 2 and returns the skeleton.
+ * Stage 1 goes in rounds of `roundSize` sources; a pool of workers runs a round as `drawRound` here,
+ * `separators` of its sources on pipelines of the same mesh and options anywhere, then `accept` here
+ * of all of them in the round's order: the same skeleton as `step`, whatever the number of workers.
  */
 export interface Pipeline {
   step(sources: number): PipelineProgress;
+  /** The next round's sources (empty once stage 1 is done); the same until `accept` takes the round. */
+  drawRound(): Uint32Array;
+  /** Stage 1 from these sources, drawing and keeping nothing (a pool worker's share of a round). */
+  separators(sources: Uint32Array): CandidateRecord[];
+  /** The candidates of the drawn round, in its order. */
+  accept(records: CandidateRecord[]): PipelineProgress;
   finish(): Skeleton;
   dispose(): void;
 }

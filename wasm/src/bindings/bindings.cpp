@@ -170,6 +170,58 @@ val evaluate(const val& positions, const val& triangles, const val& nodes, const
   });
 }
 
+// A mesh candidate's surface points cross exactly: each point's kind (0 vertex, 1 edge, 2 face), its
+// element's index and its coordinates (t along the edge; barycentric in the face).
+template <>
+struct CandidateRecord<MeshRealization::Candidate> {
+  static val write(const MeshRealization::Candidate& c, const Surface&) {
+    val o = baseRecord(c);
+    std::vector<uint8_t> kinds;
+    std::vector<uint32_t> elements;
+    std::vector<double> coords;
+    for (const SurfacePoint& p : c.points) {
+      switch (p.type) {
+      case geometrycentral::surface::SurfacePointType::Vertex:
+        kinds.push_back(0), elements.push_back(uint32_t(p.vertex.getIndex())), coords.insert(coords.end(), {0, 0, 0});
+        break;
+      case geometrycentral::surface::SurfacePointType::Edge:
+        kinds.push_back(1), elements.push_back(uint32_t(p.edge.getIndex())), coords.insert(coords.end(), {p.tEdge, 0, 0});
+        break;
+      case geometrycentral::surface::SurfacePointType::Face:
+        kinds.push_back(2), elements.push_back(uint32_t(p.face.getIndex()));
+        coords.insert(coords.end(), {p.faceCoords.x, p.faceCoords.y, p.faceCoords.z});
+        break;
+      }
+    }
+    val points = val::object();
+    points.set("kinds", toTypedArray("Uint8Array", kinds));
+    points.set("elements", toTypedArray("Uint32Array", elements));
+    points.set("coords", toFloat64Array(coords));
+    o.set("points", points);
+    return o;
+  }
+
+  static MeshRealization::Candidate read(const val& o, Surface& surface) {
+    MeshRealization::Candidate c;
+    readBaseRecord(o, c);
+    const val points = o["points"];
+    const std::vector<uint8_t> kinds = convertJSArrayToNumberVector<uint8_t>(points["kinds"]);
+    const std::vector<uint32_t> elements = convertJSArrayToNumberVector<uint32_t>(points["elements"]);
+    const std::vector<double> coords = convertJSArrayToNumberVector<double>(points["coords"]);
+    if (elements.size() != kinds.size() || coords.size() != 3 * kinds.size()) throw InputError("a candidate's points are malformed");
+    auto& mesh = surface.mesh();
+    for (size_t i = 0; i < kinds.size(); i++) {
+      const size_t limit = kinds[i] == 0 ? mesh.nVertices() : kinds[i] == 1 ? mesh.nEdges() : mesh.nFaces();
+      if (kinds[i] > 2 || elements[i] >= limit) throw InputError("a candidate's point lies on no element of this mesh");
+      const double* x = &coords[3 * i];
+      if (kinds[i] == 0) c.points.emplace_back(mesh.vertex(elements[i]));
+      else if (kinds[i] == 1) c.points.emplace_back(mesh.edge(elements[i]), x[0]);
+      else c.points.emplace_back(mesh.face(elements[i]), geometrycentral::Vector3{x[0], x[1], x[2]});
+    }
+    return c;
+  }
+};
+
 class SurfaceBinding {
 public:
   SurfaceBinding(const val& positions, const val& triangles) {

@@ -53,6 +53,7 @@ Options toOptions(const val& given) {
     }
   }
   options.pruneLengthFactor = number("pruneLengthFactor", options.pruneLengthFactor);
+  options.roundSize = int(number("roundSize", options.roundSize));
   return options;
 }
 
@@ -67,6 +68,7 @@ val optionLimits() {
   defaults.set("pruneDepth", d.pruneDepth);
   defaults.set("n", d.n == 0 ? val("auto") : val(d.n));
   defaults.set("pruneLengthFactor", d.pruneLengthFactor);
+  defaults.set("roundSize", d.roundSize);
   val ranges = val::object();
   for (const OptionRange& range : kOptionRanges) {
     val pair = val::array();

@@ -2,9 +2,13 @@
 
 // The binding of Pipeline<Realization>, one template for every realization: a resumable job over a shape
 // (which must outlive it) whose step() streams the new candidates' loops and whose finish() returns the
-// skeleton record (lib/core/types.ts: Skeleton). A realization's module registers it with
-// bindPipeline<Realization, ShapeBinding>("Pipeline"); ShapeBinding::shape() is the realization's shape,
-// or null when it could not be opened.
+// skeleton record (lib/core/types.ts: Skeleton). For a pool of workers, each with its own module and
+// shape, one pipeline draws each round (drawRound), the others compute separators of its sources
+// (separators) and the first takes them back in order (accept); candidates cross as records
+// (CandidateRecord below, exact: the same bits whichever worker computed them). A realization's module
+// registers it with bindPipeline<Realization, ShapeBinding>("Pipeline"); ShapeBinding::shape() is the
+// realization's shape, or null when it could not be opened, and CandidateRecord<its Candidate> says how
+// its candidates cross.
 #include "bindings/convert.h"
 #include "cscd/pipeline.h"
 
@@ -13,6 +17,7 @@
 #include <algorithm>
 #include <memory>
 #include <optional>
+#include <string>
 
 namespace cscd {
 namespace binding {
@@ -27,6 +32,46 @@ inline const char* fateName(Fate fate) {
   }
   return "failed";
 }
+
+// A candidate as a record of the JS heap and back (lib/core/types.ts: CandidateRecord). The generic
+// fields are written here; a realization's specialisation adds its own (on a mesh, the surface points).
+template <class C>
+struct CandidateRecord;
+
+inline val baseRecord(const Candidate& c) {
+  val o = val::object();
+  o.set("source", c.source);
+  o.set("found", c.found);
+  o.set("loop", toFloat64Array(c.loop));
+  o.set("closed", c.closed);
+  o.set("length", c.length);
+  o.set("score", c.score);
+  o.set("centroidInside", c.centroidInside);
+  return o;
+}
+
+inline void readBaseRecord(const val& o, Candidate& c) {
+  c.source = o["source"].as<size_t>();
+  c.found = o["found"].as<bool>();
+  const std::vector<double> flat = emscripten::convertJSArrayToNumberVector<double>(o["loop"]);
+  for (size_t i = 0; i + 2 < flat.size(); i += 3) c.loop.push_back({flat[i], flat[i + 1], flat[i + 2]});
+  c.closed = o["closed"].as<bool>();
+  c.length = o["length"].as<double>();
+  c.score = o["score"].as<double>();
+  c.centroidInside = o["centroidInside"].as<bool>();
+}
+
+template <>
+struct CandidateRecord<Candidate> {
+  template <class Shape>
+  static val write(const Candidate& c, const Shape&) { return baseRecord(c); }
+  template <class Shape>
+  static Candidate read(const val& o, const Shape&) {
+    Candidate c;
+    readBaseRecord(o, c);
+    return c;
+  }
+};
 
 template <class C>
 val toVal(const Skeleton& skeleton, const std::vector<C>& drawn, const Options& options) {
@@ -73,8 +118,11 @@ val toVal(const Skeleton& skeleton, const std::vector<C>& drawn, const Options& 
 
 template <class Realization, class ShapeBinding>
 class PipelineBinding {
+  using Candidate = typename Realization::Candidate;
+  using Record = CandidateRecord<Candidate>;
+
 public:
-  PipelineBinding(ShapeBinding& shape, const val& options) {
+  PipelineBinding(ShapeBinding& shape_, const val& options) : shape(shape_) {
     try {
       if (!shape.shape()) throw InputError("the shape could not be opened");
       settings = toOptions(options);
@@ -89,22 +137,34 @@ public:
 
   // Stage 1 for `count` more sources; the loops drawn since the last call come along for display.
   val step(double count) {
+    return reportingErrors([&] { return progressRecord(pipeline->step(size_t(std::max(1.0, count)))); });
+  }
+
+  // The next round's sources (empty once stage 1 is done); the same until accept() takes the round.
+  val drawRound() {
     return reportingErrors([&] {
-      Progress progress = pipeline->step(size_t(std::max(1.0, count)));
-      val newLoops = val::array();
-      std::vector<uint8_t> newClosed;
-      for (size_t i = loopsReported; i < progress.done; i++) {
-        newLoops.call<void>("push", toFloat64Array(pipeline->candidates()[i].loop));
-        newClosed.push_back(pipeline->candidates()[i].closed);
-      }
-      loopsReported = progress.done;
-      val o = val::object();
-      o.set("done", progress.done);
-      o.set("total", progress.total);
-      o.set("finished", progress.finished);
-      o.set("newLoops", newLoops);
-      o.set("newClosed", toTypedArray("Uint8Array", newClosed));
-      return o;
+      std::vector<size_t> round = pipeline->drawRound();
+      return toTypedArray("Uint32Array", std::vector<uint32_t>(round.begin(), round.end()));
+    });
+  }
+
+  // Stage 1 from the given sources, here, without drawing or keeping anything: a pool worker's share.
+  val separators(const val& sources) {
+    return reportingErrors([&] {
+      val records = val::array();
+      for (uint32_t source : emscripten::convertJSArrayToNumberVector<uint32_t>(sources))
+        records.call<void>("push", Record::write(realization->separator(checkedSource(source)), *shape.shape()));
+      return records;
+    });
+  }
+
+  // The candidates of the round drawRound() gave, as records, in its order.
+  val accept(const val& records) {
+    return reportingErrors([&] {
+      std::vector<Candidate> round;
+      const size_t count = records["length"].as<size_t>();
+      for (size_t i = 0; i < count; i++) round.push_back(Record::read(records[i], *shape.shape()));
+      return progressRecord(pipeline->accept(std::move(round)));
     });
   }
 
@@ -113,6 +173,31 @@ public:
   }
 
 private:
+  // Progress, with the loops taken since the last report (for display).
+  val progressRecord(const Progress& progress) {
+    val newLoops = val::array();
+    std::vector<uint8_t> newClosed;
+    for (size_t i = loopsReported; i < progress.done; i++) {
+      newLoops.call<void>("push", toFloat64Array(pipeline->candidates()[i].loop));
+      newClosed.push_back(pipeline->candidates()[i].closed);
+    }
+    loopsReported = progress.done;
+    val o = val::object();
+    o.set("done", progress.done);
+    o.set("total", progress.total);
+    o.set("finished", progress.finished);
+    o.set("newLoops", newLoops);
+    o.set("newClosed", toTypedArray("Uint8Array", newClosed));
+    return o;
+  }
+
+  size_t checkedSource(uint32_t source) const {
+    if (source >= realization->samples().positions.size())
+      throw InputError("source " + std::to_string(source) + " is out of range");
+    return source;
+  }
+
+  ShapeBinding& shape;
   Options settings;
   std::unique_ptr<Realization> realization;
   std::unique_ptr<Pipeline<Realization>> pipeline;
@@ -127,6 +212,9 @@ void bindPipeline(const char* name) {
       .template constructor<ShapeBinding&, const val&>()
       .function("error", &Binding::error)
       .function("step", &Binding::step)
+      .function("drawRound", &Binding::drawRound)
+      .function("separators", &Binding::separators)
+      .function("accept", &Binding::accept)
       .function("finish", &Binding::finish);
 }
 

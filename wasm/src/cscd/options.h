@@ -20,6 +20,7 @@ struct Options {
   double laplacianThreshold = 0.2;           // cut locus: min -(mean edge length) x Laplacian of the distance
   int pruneDepth = 3;                        // cut locus: leaf branches shorter than this (edges) are pruned
   int n = 0;                                 // sources to sample; 0 = auto (until coverage stops growing)
+  int roundSize = 8;                         // sources drawn at once, their separators computed together
   double pruneLengthFactor = 3;              // loops shorter than this many mean edge lengths are pruned
 };
 
@@ -31,6 +32,7 @@ struct OptionRange {
 constexpr OptionRange kOptionRanges[] = {
     {"seed", 0, 4294967295.0},   {"angleThreshold", 0, M_PI}, {"laplacianThreshold", 0, 1e6},
     {"pruneDepth", 0, 1000},     {"n", 1, 100000},            {"pruneLengthFactor", 0, 1000},
+    {"roundSize", 1, 256},
 };
 
 } // namespace cscd

@@ -5,7 +5,8 @@
 // cscd::Candidate with whatever the realization needs to remember of a separator (on a mesh, the loop's
 // surface points). The pipeline owns the candidates and hands them to the steps that need them:
 //   Candidate separator(size_t source)          stage 1 from one source (Alg. 2)
-//   size_t nextSource()                         adaptive sampling (Sec. 4.1.7)
+//   size_t nextSource(const std::vector<size_t>& round)   adaptive sampling (Sec. 4.1.7), away from
+//                                               what is covered and from the round's earlier sources
 //   void cover(const Candidate& c)              what the candidate's source and loop now cover
 //   double coverage()                           share of the shape near what is covered
 //   double resolution()                         mean sample spacing (edge length)
@@ -23,8 +24,10 @@
 #include "cscd/regions.h"
 #include "cscd/stage_clock.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -89,7 +92,7 @@ struct IsRealization {
   using C = typename R::Candidate;
   static constexpr bool value =
       std::is_base_of_v<Candidate, C> && std::is_same_v<decltype(std::declval<R&>().separator(size_t())), C> &&
-      std::is_convertible_v<decltype(std::declval<R&>().nextSource()), size_t> &&
+      std::is_convertible_v<decltype(std::declval<R&>().nextSource(std::declval<const std::vector<size_t>&>())), size_t> &&
       std::is_void_v<decltype(std::declval<R&>().cover(std::declval<const C&>()))> &&
       std::is_convertible_v<decltype(std::declval<R&>().coverage()), double> &&
       std::is_convertible_v<decltype(std::declval<R&>().resolution()), double> &&
@@ -116,18 +119,46 @@ public:
   // Every candidate of stage 1 so far, in draw order (stage 2 keeps them: its fates index them).
   const std::vector<Candidate>& candidates() const { return drawn; }
 
-  // Stage 1 for up to `count` more sources.
-  Progress step(size_t count) {
-    auto start = std::chrono::steady_clock::now();
-    for (size_t k = 0; k < count && !done; k++) {
-      drawn.push_back(realization.separator(realization.nextSource()));
+  // Stage 1 in rounds: a round draws up to `roundSize` sources at once, from what the rounds before it
+  // covered, and then takes their candidates in draw order. The separators of a round do not depend on
+  // each other, so they may be computed anywhere and in any order (a worker pool: drawRound, then
+  // accept) and the skeleton stays the same; step() computes them here.
+  std::vector<size_t> drawRound() {
+    if (!round.empty() || done) return round;
+    const size_t size = std::min<size_t>(options.roundSize, total() - drawn.size());
+    for (size_t k = 0; k < size; k++) round.push_back(realization.nextSource(round));
+    return round;
+  }
+
+  // The candidates of the round drawRound() gave, in its order. In auto mode the stop rule is applied
+  // after each one, so a round may end stage 1 part way (its later candidates are dropped).
+  Progress accept(std::vector<Candidate> candidates) {
+    if (candidates.size() != round.size()) throw std::logic_error("a round's candidates must match its sources");
+    for (size_t k = 0; k < candidates.size() && !done; k++) {
+      if (candidates[k].source != round[k]) throw std::logic_error("a round's candidates must come in its order");
+      drawn.push_back(std::move(candidates[k]));
       realization.cover(drawn.back());
       coverageHistory.push_back(realization.coverage());
       done = options.n > 0 ? drawn.size() >= size_t(options.n) : autoSaturated();
     }
-    stage1Ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return {drawn.size(), done ? drawn.size() : total(), done};
+    round.clear();
+    return progress();
   }
+
+  // Stage 1 here, whole rounds until at least `count` more sources are done (or stage 1 is).
+  Progress step(size_t count) {
+    auto start = std::chrono::steady_clock::now();
+    const size_t target = drawn.size() + count;
+    while (!done && drawn.size() < target) {
+      std::vector<Candidate> candidates;
+      for (size_t source : drawRound()) candidates.push_back(realization.separator(source));
+      accept(std::move(candidates));
+    }
+    stage1Ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return progress();
+  }
+
+  Progress progress() const { return {drawn.size(), done ? drawn.size() : total(), done}; }
 
   // Stage 2 (after the remaining sources of stage 1): prune, pack, regions, graph, clique to star.
   Skeleton finish() {
@@ -200,6 +231,7 @@ private:
   Realization& realization;
   Options options;
   std::vector<Candidate> drawn;
+  std::vector<size_t> round; // sources drawn, candidates not yet accepted
   std::vector<double> coverageHistory;
   double stage1Ms = 0;
   bool done = false;

@@ -19,7 +19,7 @@ public:
   MeshRealization(Surface& surface, const Options& options);
 
   Candidate separator(size_t source);
-  size_t nextSource() { return sampler.next(); }
+  size_t nextSource(const std::vector<size_t>& round) { return sampler.next(round); }
   void cover(const Candidate& candidate) { sampler.cover(candidate.source, candidate.points); }
   double coverage() const;
   double resolution() const { return surface.facts().meanEdgeLength; }

@@ -16,15 +16,25 @@ SourceSampler::SourceSampler(Surface& surface_, uint32_t seed)
   for (size_t v = 0; v < area.size(); v++) totalArea += area[v] = geometry.vertexDualAreas[v];
 }
 
-size_t SourceSampler::next() {
+size_t SourceSampler::next(const std::vector<size_t>& round) {
+  if (round.empty()) {
+    roundSeen = 0;
+  } else {
+    if (roundSeen == 0) nearRound = distance;
+    for (; roundSeen < round.size(); roundSeen++) {
+      std::vector<double> d = surface.geodesics().fromVertex(round[roundSeen]);
+      for (size_t v = 0; v < d.size(); v++) nearRound[v] = std::min(nearRound[v], d[v]);
+    }
+  }
+  const std::vector<double>& away = round.empty() ? distance : nearRound;
   // Unreached vertices (nothing sampled yet in their component) get the largest finite weight.
   constexpr double kMaxExponent = 50;
   std::vector<double> cumulative(area.size());
   double sum = 0;
-  bool anyCovered = std::any_of(distance.begin(), distance.end(), [](double d) { return std::isfinite(d); });
+  bool anyCovered = std::any_of(away.begin(), away.end(), [](double d) { return std::isfinite(d); });
   for (size_t v = 0; v < area.size(); v++) {
     double weight = area[v];
-    if (anyCovered) weight *= std::expm1(std::isfinite(distance[v]) ? std::min(distance[v] / scale, kMaxExponent) : kMaxExponent);
+    if (anyCovered) weight *= std::expm1(std::isfinite(away[v]) ? std::min(away[v] / scale, kMaxExponent) : kMaxExponent);
     cumulative[v] = sum += weight;
   }
   // 53 random bits make a uniform double in [0, 1) the same way on every platform.

@@ -14,11 +14,16 @@ namespace cscd {
 // scale that makes d scale-free: a vertex a tenth of the diagonal away weighs e - 1 = 1.7, one half
 // a diagonal away e^5 - 1 = 147, so far, unexplored features are visited first. Components not yet
 // reached weigh the most. Deterministic for a seed (std::mt19937 is fully specified).
+//
+// Sources are drawn in rounds whose separators are computed together (Pipeline): a draw also keeps
+// away from the round's earlier sources, whose loops are not known yet (d_i is then the distance to
+// the covered set or to those sources, whichever is nearer), while coverage counts only what is covered.
 class SourceSampler {
 public:
   SourceSampler(Surface& surface, uint32_t seed);
 
-  size_t next();
+  // The next source of a round whose earlier sources are `round` (empty: the round's first draw).
+  size_t next(const std::vector<size_t>& round);
 
   // Marks a source and its separator's loop (empty if it had none) as covered.
   void cover(size_t source, const std::vector<geometrycentral::surface::SurfacePoint>& loop);
@@ -31,6 +36,8 @@ private:
   std::mt19937 rng;
   std::vector<double> area;
   std::vector<double> distance; // to the covered set; +infinity before the first source
+  std::vector<double> nearRound; // to the covered set or the current round's sources drawn so far
+  size_t roundSeen = 0;          // how many of the round's sources nearRound includes
   double scale;
   double totalArea = 0;
 };

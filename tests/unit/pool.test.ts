@@ -1,0 +1,87 @@
+// Stage 1 on a pool of worker threads (lib/core/pool.ts, node-pool.ts): the skeleton does not depend
+// on the number of workers, a lost worker's sources are computed by the others, a cancel stops the run.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { loadCoreNode, type Core } from '../../lib/core/node.ts';
+import { openNodePool, type NodePool } from '../../lib/core/node-pool.ts';
+import { runStage1, type SeparatorWorker } from '../../lib/core/pool.ts';
+import { defaultOptions } from '../../lib/core/options.ts';
+import type { MeshArrays, Options, Skeleton } from '../../lib/core/types.ts';
+import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
+import { sharedMesh } from '../paths.ts';
+import { readMesh } from './support/meshes.ts';
+
+const MESH: MeshArrays = readMesh(sharedMesh('fertility_9k.ply'));
+const OPTIONS: Options = { ...defaultOptions, n: 12, roundSize: 4, seed: 7 };
+
+let core: Core;
+let pool: NodePool;
+beforeAll(async () => {
+  core = await loadCoreNode();
+  pool = await openNodePool(MESH, OPTIONS, { workers: 3 });
+}, 60_000);
+afterAll(() => pool?.close());
+
+/** The skeleton JSON without timings: what must not depend on the pool. */
+const json = (s: Skeleton) => writeSkeletonJson({ ...s, stats: { ...s.stats, timings: {} } }, { mesh: 'fertility_9k.ply', options: OPTIONS });
+
+async function skeletonWith(workers: readonly SeparatorWorker[], hooks = {}): Promise<Skeleton> {
+  const surface = core.openRefinedSurface(MESH);
+  const pipeline = surface.pipeline(OPTIONS);
+  try {
+    await runStage1(pipeline, workers, hooks);
+    return pipeline.finish();
+  } finally {
+    pipeline.dispose();
+    surface.dispose();
+  }
+}
+
+describe('stage 1 on a pool of worker threads', () => {
+  it('gives the skeleton of a single thread, byte for byte, with 1, 2 or 3 threads', async () => {
+    const surface = core.openRefinedSurface(MESH);
+    const alone = surface.skeleton(OPTIONS);
+    surface.dispose();
+    expect(alone.stats.n).toBe(12);
+    for (const workers of [[], pool.workers.slice(0, 1), pool.workers]) expect(json(await skeletonWith(workers)), `${workers.length + 1} threads`).toBe(json(alone));
+  }, 120_000);
+
+  it('hands the sources of a worker that fails to the others and reports it', async () => {
+    const surface = core.openRefinedSurface(MESH);
+    const alone = json(surface.skeleton(OPTIONS));
+    surface.dispose();
+    let calls = 0;
+    const failing: SeparatorWorker = {
+      separators: (sources) => (++calls === 3 ? Promise.reject(new Error('worker crashed')) : pool.workers[0].separators(sources)),
+    };
+    const lost: unknown[] = [];
+    const skeleton = await skeletonWith([failing, pool.workers[1]], { lost: (_: SeparatorWorker, e: unknown) => lost.push(e) });
+    expect(lost).toEqual([new Error('worker crashed')]);
+    expect(json(skeleton)).toBe(alone);
+  }, 120_000);
+
+  it('goes on without a thread that stops mid-run', async () => {
+    const spare = await openNodePool(MESH, OPTIONS, { workers: 2 });
+    const lost: unknown[] = [];
+    let rounds = 0;
+    const skeleton = await skeletonWith(spare.workers, {
+      lost: (_: SeparatorWorker, e: unknown) => lost.push(e),
+      progress: () => {
+        if (++rounds === 1) void spare.workers[0].close();
+      },
+    });
+    expect(lost).toHaveLength(1);
+    expect(String(lost[0])).toMatch(/worker thread stopped/);
+    expect(skeleton.stats.n).toBe(12);
+    await spare.close();
+  }, 120_000);
+
+  it('stops at a cancel', async () => {
+    let checks = 0;
+    const cancelled = skeletonWith(pool.workers, {
+      check: () => {
+        if (++checks === 3) throw new Error('cancelled');
+      },
+    });
+    await expect(cancelled).rejects.toThrow('cancelled');
+  }, 120_000);
+});

@@ -3,7 +3,8 @@
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { afterAll, describe, expect, it } from 'vitest';
+import { afterAll, describe, expect, it, vi } from 'vitest';
+import { getCore } from '../../cli/command.ts';
 import { fixture, repoRoot, sharedMesh } from '../paths.ts';
 import { cscd } from './support/cli.ts';
 
@@ -93,5 +94,23 @@ describe('cscd', () => {
     expect(expectError(await cscd('frobnicate'), 2)).toBe("unknown command 'frobnicate' (see cscd --help)");
     expect(expectError(await cscd('info'), 2)).toMatch(/^info: expected <mesh>, got 0 arguments/);
     expect(expectError(await cscd('info', 'a.ply', '--bogus'), 2)).toMatch(/^info: Unknown option '--bogus'/);
+  });
+
+  it('shares one core across runs; a WASM abort is one line, exit 1, and the next run loads a fresh core', async () => {
+    const mesh = sharedMesh('two_torus.ply');
+    const core = await getCore();
+    expect((await cscd('info', mesh)).status).toBe(0);
+    expect(await getCore()).toBe(core);
+    // What emscripten's abort() throws.
+    const inspect = vi.spyOn(core, 'inspect').mockImplementation(() => {
+      throw new WebAssembly.RuntimeError('Aborted(simulated)');
+    });
+    try {
+      expect(expectError(await cscd('info', mesh), 1)).toBe('RuntimeError: Aborted(simulated)');
+    } finally {
+      inspect.mockRestore();
+    }
+    expect(await getCore()).not.toBe(core);
+    expect(JSON.parse((await cscd('info', mesh)).stdout)).toMatchObject({ vertices: 766, genus: 2 });
   });
 });

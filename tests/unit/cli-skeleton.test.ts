@@ -75,14 +75,19 @@ describe('cscd skeleton', () => {
   }, 120_000);
 
   it('writes PLY, OBJ and SWC that read back to the same skeleton (format from --format, else the --out extension)', async () => {
+    // A fixed small N (the formats are under test, not N), at which the skeleton still has both cycles.
+    const n = ['--n', '12'];
     const ply = path.join(tmp, 'skel.ply');
     const swc = path.join(tmp, 'skel.txt');
     const runs = {
-      ply: await cscd('skeleton', twoTorus, '--out', ply),
-      obj: await cscd('skeleton', twoTorus, '--format', 'obj', '--verbose'),
-      swc: await cscd('skeleton', twoTorus, '--format', 'swc', '--out', swc),
+      json: await cscd('skeleton', twoTorus, ...n),
+      ply: await cscd('skeleton', twoTorus, ...n, '--out', ply),
+      obj: await cscd('skeleton', twoTorus, ...n, '--format', 'obj', '--verbose'),
+      swc: await cscd('skeleton', twoTorus, ...n, '--format', 'swc', '--out', swc),
     };
     for (const [format, result] of Object.entries(runs)) expect(result.status, format).toBe(0);
+    const reference = JSON.parse(runs.json.stdout) as SkeletonJson;
+    expect(reference.stats).toMatchObject({ n: 12, cycles: 2 });
     const files = {
       ply: readFileSync(ply, 'utf8'),
       obj: runs.obj.stdout,
@@ -91,21 +96,21 @@ describe('cscd skeleton', () => {
     expect(files.ply.startsWith('ply\nformat ascii 1.0\n')).toBe(true);
     expect(files.swc).toMatch(/\n# cycle edges: \d+-\d+ \d+-\d+\n/);
 
-    const nodes = Float64Array.from(json.nodes.flat());
-    const edges = json.edges.map(([a, b]) => `${Math.min(a, b)}-${Math.max(a, b)}`).sort();
+    const nodes = Float64Array.from(reference.nodes.flat());
+    const edges = reference.edges.map(([a, b]) => `${Math.min(a, b)}-${Math.max(a, b)}`).sort();
     for (const [format, content] of Object.entries(files)) {
       const read = parseSkeleton(content, `skeleton.${format}`);
       expect(read.format).toBe(format);
       expect(read.nodes, format).toEqual(nodes);
-      expect(read.radii, format).toEqual(Float64Array.from(json.radii));
+      expect(read.radii, format).toEqual(Float64Array.from(reference.radii));
       const pairs: string[] = [];
       for (let k = 0; k < read.edges.length; k += 2) pairs.push(`${Math.min(read.edges[k], read.edges[k + 1])}-${Math.max(read.edges[k], read.edges[k + 1])}`);
       expect(pairs.sort(), format).toEqual(edges);
     }
 
     // --verbose: the summary line, although stderr is not a terminal.
-    expect(runs.obj.stderr).toBe(`cscd: skeleton of two_torus.ply: ${json.nodes.length} nodes, ${json.edges.length} edges, 2 cycles, `
-      + `N = ${json.stats.n} (${json.stats.packed} of ${json.stats.candidates} separators kept), ${/, ([\d.]+) s\n$/.exec(runs.obj.stderr)?.[1]} s\n`);
+    expect(runs.obj.stderr).toBe(`cscd: skeleton of two_torus.ply: ${reference.nodes.length} nodes, ${reference.edges.length} edges, 2 cycles, `
+      + `N = ${reference.stats.n} (${reference.stats.packed} of ${reference.stats.candidates} separators kept), ${/, ([\d.]+) s\n$/.exec(runs.obj.stderr)?.[1]} s\n`);
     expect(runs.ply.stderr).toBe('');
   }, 240_000);
 

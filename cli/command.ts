@@ -16,6 +16,19 @@ export interface OptionSpec {
   description: string;
 }
 
+/** A text stream: the process's stdout or stderr, or a string collector in tests. */
+export interface Output {
+  write(text: string): unknown;
+  /** On stderr: a terminal, which gets the skeleton's progress line and summary. */
+  isTTY?: boolean;
+}
+
+/** Where a command writes: all of its output goes through these, never to `process` directly. */
+export interface CliIo {
+  stdout: Output;
+  stderr: Output;
+}
+
 /** Option values as node:util parseArgs returns them. */
 export type OptionValues = Record<string, string | boolean | (string | boolean)[] | undefined>;
 
@@ -28,7 +41,7 @@ export interface Command {
   options: Record<string, OptionSpec>;
   /** More text for `cscd help <command>`. */
   details?: string;
-  run(args: string[], options: OptionValues): Promise<void>;
+  run(args: string[], options: OptionValues, io: CliIo): Promise<void>;
 }
 
 /** A mistake in the command line: reported with exit code 2. */
@@ -38,10 +51,18 @@ export class UsageError extends Error {
 
 let core: Promise<Core> | undefined;
 
-/** The WASM core, loaded on first use (help and usage errors never pay for it). */
+/**
+ * The WASM core, loaded on first use (help and usage errors never pay for it) and shared by every
+ * command run in the process.
+ */
 export function getCore(): Promise<Core> {
   core ??= loadCoreNode();
   return core;
+}
+
+/** Forgets the shared core, so that the next getCore() loads a fresh one. */
+export function discardCore(): void {
+  core = undefined;
 }
 
 /** A file's bytes, or an error that says in plain words why it cannot be read. */
@@ -67,12 +88,12 @@ export interface InputMesh extends ParsedMesh {
  * Reads, parses and repairs a mesh file; parser warnings and repairs go to stderr unless the command
  * reports them itself.
  */
-export async function readMesh(file: string, { printWarnings = true } = {}): Promise<InputMesh> {
+export async function readMesh(file: string, io: CliIo, { printWarnings = true } = {}): Promise<InputMesh> {
   const parsed = parseMesh(await readBytes(file), file);
   const { mesh, repairs, vertexMap } = repairMesh(parsed);
   if (printWarnings) {
-    for (const warning of parsed.warnings) process.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
-    for (const repair of repairs) process.stderr.write(`cscd: repaired: ${repair}\n`);
+    for (const warning of parsed.warnings) io.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
+    for (const repair of repairs) io.stderr.write(`cscd: repaired: ${repair}\n`);
   }
   return { ...parsed, ...mesh, repairs, vertexMap };
 }
@@ -88,7 +109,7 @@ export const decimateOption: OptionSpec = {
  * The mesh decimated to `--decimate K` faces when it has more (said on stderr), else as it is;
  * `decimatedFrom` is the face count before, or null.
  */
-export function decimateIfAsked<M extends MeshArrays>(mesh: M, values: OptionValues, file: string): M & { decimatedFrom: number | null } {
+export function decimateIfAsked<M extends MeshArrays>(mesh: M, values: OptionValues, file: string, io: CliIo): M & { decimatedFrom: number | null } {
   if (values.decimate === undefined) return { ...mesh, decimatedFrom: null };
   const target = Number(values.decimate);
   if (!Number.isInteger(target) || target < 4) throw new UsageError(`--decimate must be a whole number of faces (at least 4), got '${String(values.decimate)}'`);
@@ -97,7 +118,7 @@ export function decimateIfAsked<M extends MeshArrays>(mesh: M, values: OptionVal
   const started = performance.now();
   const decimated = decimate(mesh, target);
   const seconds = ((performance.now() - started) / 1000).toFixed(1);
-  process.stderr.write(`cscd: decimated ${file} from ${faces} to ${decimated.triangles.length / 3} faces in ${seconds} s\n`);
+  io.stderr.write(`cscd: decimated ${file} from ${faces} to ${decimated.triangles.length / 3} faces in ${seconds} s\n`);
   return { ...mesh, ...decimated, decimatedFrom: faces };
 }
 
@@ -106,11 +127,11 @@ export function decimateIfAsked<M extends MeshArrays>(mesh: M, values: OptionVal
  * stderr, results stay per vertex of `mesh`), first warning on stderr when the mesh is above the size
  * limit (lib/mesh/limits.ts).
  */
-export async function openSolver(mesh: MeshArrays, file: string): Promise<RefinedSurface> {
+export async function openSolver(mesh: MeshArrays, file: string, io: CliIo): Promise<RefinedSurface> {
   const warning = sizeWarning(mesh.triangles.length / 3, mesh.positions.length / 3);
-  if (warning) process.stderr.write(`cscd: warning: ${file}: ${warning} (--decimate ${DECIMATE_TARGET} makes it faster)\n`);
+  if (warning) io.stderr.write(`cscd: warning: ${file}: ${warning} (--decimate ${DECIMATE_TARGET} makes it faster)\n`);
   const surface = (await getCore()).openRefinedSurface(mesh);
   const { refined } = surface;
-  if (refined) process.stderr.write(`cscd: refined ${file} for computation from ${refined.fromFaces} to ${refined.toFaces} faces (the same surface, sampled more densely)\n`);
+  if (refined) io.stderr.write(`cscd: refined ${file} for computation from ${refined.fromFaces} to ${refined.toFaces} faces (the same surface, sampled more densely)\n`);
   return surface;
 }

@@ -1,6 +1,6 @@
 #!/usr/bin/env node
 // Entry point of the `cscd` command: builds the WASM core on first use, then runs the TypeScript CLI
-// through tsx (no separate compile step for the CLI).
+// (cli/main.ts `run`) through tsx (no separate compile step for the CLI) on the process's streams.
 import { spawnSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import path from 'node:path';
@@ -19,4 +19,16 @@ if (!built) {
 
 const { register } = await import('tsx/esm/api');
 register();
-await import('./main.ts');
+const { run, reportError } = await import('./main.ts');
+
+const io = { stdout: process.stdout, stderr: process.stderr };
+// `cscd distance ... | head` closes stdout early, which is not an error worth a stack trace.
+process.stdout.on('error', (error) => {
+  if (error.code === 'EPIPE') process.exit(0);
+  process.exitCode = reportError(error, io);
+});
+
+// exitCode rather than process.exit(): a large JSON on stdout must be flushed before Node exits. A
+// failed write to stdout (above) may have set it already.
+const code = await run(process.argv.slice(2), io);
+process.exitCode ||= code;

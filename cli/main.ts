@@ -1,13 +1,14 @@
 /**
- * The `cscd` command line: `cscd <command> [options]`. To add a command, write it in cli/commands/
- * and list it in COMMANDS.
+ * The `cscd` command line: `cscd <command> [options]`, as `run(argv, io)` (the bin, cli/cscd.mjs,
+ * calls it with the process's streams; tests call it in-process). To add a command, write it in
+ * cli/commands/ and list it in COMMANDS.
  */
 import { readFileSync } from 'node:fs';
 import { parseArgs, type ParseArgsConfig } from 'node:util';
 import { CoreError } from '../lib/core/types.ts';
 import { MESH_EXTENSIONS, MeshFormatError } from '../lib/io/index.ts';
 import { SkeletonFormatError } from '../lib/io/skeleton.ts';
-import { UsageError, type Command } from './command.ts';
+import { UsageError, discardCore, type CliIo, type Command, type Output } from './command.ts';
 import { distance } from './commands/distance.ts';
 import { evaluate } from './commands/evaluate.ts';
 import { info } from './commands/info.ts';
@@ -16,11 +17,26 @@ import { skeleton } from './commands/skeleton.ts';
 
 const COMMANDS: Command[] = [info, distance, separator, skeleton, evaluate];
 
-async function main(argv: string[]): Promise<void> {
+/**
+ * Runs one command line (the arguments after `cscd`) with its output on `io` and resolves to the exit
+ * code; it never rejects: errors are reported as `reportError` does.
+ */
+export async function run(argv: string[], io: CliIo): Promise<number> {
+  try {
+    await dispatch(argv, io);
+    return 0;
+  } catch (error) {
+    // An aborted or trapped WASM module is not safe to call again: the next run loads a fresh one.
+    if (error instanceof WebAssembly.RuntimeError) discardCore();
+    return reportError(error, io);
+  }
+}
+
+async function dispatch(argv: string[], io: CliIo): Promise<void> {
   const [first, ...rest] = argv;
-  if (first === undefined || first === '--help' || first === '-h') return print(overview());
-  if (first === '--version' || first === '-V') return print(version());
-  if (first === 'help') return print(rest.length > 0 ? commandHelp(findCommand(rest[0])) : overview());
+  if (first === undefined || first === '--help' || first === '-h') return print(io.stdout, overview());
+  if (first === '--version' || first === '-V') return print(io.stdout, version());
+  if (first === 'help') return print(io.stdout, rest.length > 0 ? commandHelp(findCommand(rest[0])) : overview());
   const command = findCommand(first);
 
   const options: NonNullable<ParseArgsConfig['options']> = { help: { type: 'boolean', short: 'h' } };
@@ -36,14 +52,14 @@ async function main(argv: string[]): Promise<void> {
     throw code?.startsWith('ERR_PARSE_ARGS') ? new UsageError(`${command.name}: ${(error as Error).message}`) : error;
   }
   const { values, positionals } = parsed;
-  if (values.help) return print(commandHelp(command));
+  if (values.help) return print(io.stdout, commandHelp(command));
   if (positionals.length !== command.args.length) {
     throw new UsageError(`${command.name}: expected ${command.args.join(' ')}, got ${positionals.length} argument${positionals.length === 1 ? '' : 's'} (usage: ${usage(command)})`);
   }
   for (const [name, spec] of Object.entries(command.options)) {
     if (spec.required && values[name] === undefined) throw new UsageError(`${command.name}: --${name} is required (usage: ${usage(command)})`);
   }
-  await command.run(positionals, values);
+  await command.run(positionals, values, io);
 }
 
 function findCommand(name: string): Command {
@@ -52,8 +68,8 @@ function findCommand(name: string): Command {
   return command;
 }
 
-function print(text: string): void {
-  process.stdout.write(`${text}\n`);
+function print(out: Output, text: string): void {
+  out.write(`${text}\n`);
 }
 
 function version(): string {
@@ -110,23 +126,15 @@ function commandHelp(command: Command): string {
 }
 
 /**
- * One line on stderr, never a stack trace. Our own errors are meant for users as they are; others
- * (a RangeError, a WASM RuntimeError...) keep their name as a hint of what went wrong.
+ * One line on stderr, never a stack trace, and the exit code: 2 for usage errors, 1 otherwise. Our own
+ * errors are meant for users as they are; others (a RangeError, a WASM RuntimeError...) keep their name
+ * as a hint of what went wrong.
  */
-function report(error: unknown): void {
+export function reportError(error: unknown, io: CliIo): number {
   const ours = error instanceof MeshFormatError || error instanceof SkeletonFormatError || error instanceof CoreError || error instanceof UsageError;
   const message = !(error instanceof Error) ? String(error)
     : ours || error.constructor === Error ? error.message
     : `${error.name}: ${error.message}`;
-  process.stderr.write(`cscd: ${message.split('\n')[0]}\n`);
-  process.exitCode = error instanceof UsageError ? 2 : 1;
+  io.stderr.write(`cscd: ${message.split('\n')[0]}\n`);
+  return error instanceof UsageError ? 2 : 1;
 }
-
-// `cscd distance ... | head` closes stdout early, which is not an error worth a stack trace.
-process.stdout.on('error', (error: NodeJS.ErrnoException) => {
-  if (error.code === 'EPIPE') process.exit(0);
-  report(error);
-});
-
-// exitCode rather than process.exit(): a large JSON on stdout must be flushed before Node exits.
-await main(process.argv.slice(2)).catch(report);

@@ -10,12 +10,12 @@ export const distance: Command = {
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
   details: 'Writes {"distance":[...], "refined"} with one heat-method distance per vertex, in the order of the file (null for\nvertices in other components and for vertices the repair removed); `refined` says how a coarse mesh was\nrefined to compute on (null: it was not).',
-  async run([file], options) {
-    const mesh = await readMesh(file);
+  async run([file], options, io) {
+    const mesh = await readMesh(file, io);
     // Vertices are numbered as in the file, in and out, even when the repair renumbered them.
     const source = parseVertex(String(options.source), mesh.vertexMap.length);
     if (mesh.vertexMap[source] < 0) throw new UsageError(`--source ${source} is a vertex used by no face, which the repair removed`);
-    const surface = await openSolver(mesh, file);
+    const surface = await openSolver(mesh, file, io);
     let json: string;
     try {
       const distance = surface.distanceFromVertex(mesh.vertexMap[source]);
@@ -24,7 +24,7 @@ export const distance: Command = {
       surface.dispose();
     }
     if (typeof options.out === 'string') await writeFile(options.out, `${json}\n`);
-    else process.stdout.write(`${json}\n`);
+    else io.stdout.write(`${json}\n`);
   },
 };
 

@@ -14,8 +14,8 @@ export const evaluate: Command = {
     '(mean, median, 95th percentile). The skeleton may be JSON (as written by `cscd skeleton`), PLY with an',
     'edge element, OBJ with `l` lines or SWC; without radii they are derived from the mesh (docs/evaluation.md).',
   ].join('\n'),
-  async run([meshFile, skeletonFile], options) {
-    const mesh = await readMesh(meshFile);
+  async run([meshFile, skeletonFile], options, io) {
+    const mesh = await readMesh(meshFile, io);
     const skeleton = parseSkeleton(await readBytes(skeletonFile), skeletonFile);
     const result = (await getCore()).evaluate(mesh, {
       nodes: skeleton.nodes,
@@ -23,6 +23,6 @@ export const evaluate: Command = {
       radii: options['derive-radii'] ? null : skeleton.radii,
     });
     const { reconError, median, p95, nodes, cycles, radiiSource } = result;
-    process.stdout.write(`${JSON.stringify({ reconError, median, p95, nodes, cycles, radiiSource })}\n`);
+    io.stdout.write(`${JSON.stringify({ reconError, median, p95, nodes, cycles, radiiSource })}\n`);
   },
 };

@@ -144,9 +144,9 @@ export const separator: Command = {
     'approxLength, length, areas, score, centroidInside, timings, options, refined} (see docs/cli.md). A source',
     'without a separator is not an error: status tells why, with a warning on stderr and exit code 0.',
   ].join('\n'),
-  async run([file], values) {
+  async run([file], values, io) {
     const options = optionsFromFlags(values);
-    const mesh = await readMesh(file);
+    const mesh = await readMesh(file, io);
     const vertexCount = mesh.positions.length / 3;
     let source: number;
     if (typeof values.source === 'string') {
@@ -156,7 +156,7 @@ export const separator: Command = {
       [source] = randomSources(mesh, options.seed, 1);
       if (source === undefined) throw new UsageError(`${file}: no vertex to draw a source from (the mesh has no faces)`);
     }
-    const surface = await openSolver(mesh, file);
+    const surface = await openSolver(mesh, file, io);
     let json: SeparatorJson;
     try {
       json = separatorJson(surface.separator(source, options), options);
@@ -165,10 +165,10 @@ export const separator: Command = {
     }
     const text = `${JSON.stringify(json)}\n`;
     if (typeof values.out === 'string') await writeFile(values.out, text);
-    else process.stdout.write(text);
+    else io.stdout.write(text);
     if (json.status !== 'ok') {
       const reason = json.message.split('\n')[0];
-      process.stderr.write(`cscd: warning: ${file}: no separator from source ${source}: ${json.status}${reason ? ` (${reason})` : ''}\n`);
+      io.stderr.write(`cscd: warning: ${file}: no separator from source ${source}: ${json.status}${reason ? ` (${reason})` : ''}\n`);
     }
   },
 };

@@ -2,7 +2,7 @@ import { writeFile } from 'node:fs/promises';
 import path from 'node:path';
 import type { Skeleton } from '../../lib/core/types.ts';
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
-import { UsageError, decimateIfAsked, decimateOption, openSolver, readMesh, type Command, type OptionValues } from '../command.ts';
+import { UsageError, decimateIfAsked, decimateOption, openSolver, readMesh, type Command, type OptionValues, type Output } from '../command.ts';
 import { optionFlagSpecs, optionsFromFlags } from './separator.ts';
 
 /** Sources per pipeline step: small enough for a lively progress line, the step cost is one JS/WASM call. */
@@ -27,16 +27,18 @@ class ProgressLine {
   private last = -Infinity;
   private shown = false;
 
+  constructor(private readonly stderr: Output) {}
+
   update(text: string, force = false): void {
     const now = performance.now();
     if (!force && now - this.last < PROGRESS_INTERVAL) return;
     this.last = now;
     this.shown = true;
-    process.stderr.write(`\r${text}\x1b[K`);
+    this.stderr.write(`\r${text}\x1b[K`);
   }
 
   clear(): void {
-    if (this.shown) process.stderr.write('\r\x1b[K');
+    if (this.shown) this.stderr.write('\r\x1b[K');
     this.shown = false;
   }
 }
@@ -58,17 +60,17 @@ export const skeleton: Command = {
     'builds the skeleton from the regions they bound (stage 2). On a terminal, progress and a summary',
     '(nodes, edges, cycles, N, seconds) go to stderr. Formats and keys: docs/cli.md.',
   ].join('\n'),
-  async run([file], values) {
+  async run([file], values, io) {
     const options = optionsFromFlags(values);
     const format = outputFormat(values);
-    const mesh = decimateIfAsked(await readMesh(file), values, file);
-    const tty = process.stderr.isTTY === true;
-    const progress = new ProgressLine();
+    const mesh = decimateIfAsked(await readMesh(file, io), values, file, io);
+    const tty = io.stderr.isTTY === true;
+    const progress = new ProgressLine(io.stderr);
     const name = path.basename(file);
 
     const started = performance.now();
     let result: Skeleton;
-    const surface = await openSolver(mesh, file);
+    const surface = await openSolver(mesh, file, io);
     try {
       const pipeline = surface.pipeline(options);
       try {
@@ -90,14 +92,14 @@ export const skeleton: Command = {
 
     const text = SKELETON_WRITERS[format](result, { mesh: file, options });
     if (typeof values.out === 'string') await writeFile(values.out, text);
-    else process.stdout.write(text);
+    else io.stdout.write(text);
 
     const { stats } = result;
-    if (stats.packed === 0) process.stderr.write(`cscd: warning: ${file}: no separator was kept: the skeleton is one node per connected component\n`);
+    if (stats.packed === 0) io.stderr.write(`cscd: warning: ${file}: no separator was kept: the skeleton is one node per connected component\n`);
     if (tty || values.verbose === true) {
       const nodes = result.nodes.length / 3;
       const edges = result.edges.length / 2;
-      process.stderr.write(`cscd: skeleton of ${name}: ${nodes} nodes, ${edges} edges, ${stats.cycles} cycles, `
+      io.stderr.write(`cscd: skeleton of ${name}: ${nodes} nodes, ${edges} edges, ${stats.cycles} cycles, `
         + `N = ${stats.n} (${stats.packed} of ${stats.candidates} separators kept), ${seconds.toFixed(1)} s\n`);
     }
   },

@@ -113,11 +113,11 @@ describe('a separator on a sheet', () => {
     expect(onIt).toEqual([]);
   });
 
-  it('comes out of the CLI with its ends', () => {
+  it('comes out of the CLI with its ends', async () => {
     const folder = mkdtempSync(path.join(tmpdir(), 'cscd-boundary-'));
     const file = path.join(folder, 'strip.off');
     writeFileSync(file, offText(STRIP));
-    const { status, stdout } = cscd('separator', file, '--source', String(vertexNear(STRIP, 0.3, 0)));
+    const { status, stdout } = await cscd('separator', file, '--source', String(vertexNear(STRIP, 0.3, 0)));
     expect(status).toBe(0);
     const json = JSON.parse(stdout);
     expect(json).toMatchObject({ status: 'ok', closed: false, target: null });

@@ -1,4 +1,4 @@
-// `cscd separator` run as users run it: a child process writing the stage-1 JSON.
+// `cscd separator` (in-process) writing the stage-1 JSON.
 import type { Point, SeparatorJson } from '../../cli/commands/separator.ts';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -35,7 +35,7 @@ describe('cscd separator', () => {
   let outer: number;
   let vertexCount: number;
   let json: SeparatorJson;
-  beforeAll(() => {
+  beforeAll(async () => {
     const { positions } = readMesh(torus);
     vertexCount = positions.length / 3;
     const extent = [0, 1, 2].map((k) => {
@@ -51,7 +51,7 @@ describe('cscd separator', () => {
       if (r > best) [best, outer] = [r, i];
     }
     const out = path.join(tmp, 'sep.json');
-    const result = cscd('separator', torus, '--source', String(outer), '--out', out);
+    const result = await cscd('separator', torus, '--source', String(outer), '--out', out);
     expect(result).toEqual({ status: 0, stdout: '', stderr: '' });
     json = JSON.parse(readFileSync(out, 'utf8')) as SeparatorJson;
   });
@@ -98,8 +98,8 @@ describe('cscd separator', () => {
     expect(json.length).toBeGreaterThan(0.9 * Math.PI);
   });
 
-  it('accepts --target geodesic and --no-sphere and reports them in options', () => {
-    const result = cscd('separator', torus, '--source', String(outer), '--target', 'geodesic', '--no-sphere', '--prune-depth', '4');
+  it('accepts --target geodesic and --no-sphere and reports them in options', async () => {
+    const result = await cscd('separator', torus, '--source', String(outer), '--target', 'geodesic', '--no-sphere', '--prune-depth', '4');
     expect(result.status).toBe(0);
     const other = JSON.parse(result.stdout) as SeparatorJson;
     expect(other.options).toEqual({ ...defaultOptions, target: 'geodesic', sphere: false, pruneDepth: 4 });
@@ -107,26 +107,26 @@ describe('cscd separator', () => {
     expect(other.source).toBe(outer);
   });
 
-  it('draws the same source from the same seed when --source is not given', () => {
-    const source = (...args: string[]) => {
-      const result = cscd('separator', sharedMesh('two_torus.ply'), ...args);
+  it('draws the same source from the same seed when --source is not given', async () => {
+    const source = async (...args: string[]) => {
+      const result = await cscd('separator', sharedMesh('two_torus.ply'), ...args);
       expect(result.status).toBe(0);
       return (JSON.parse(result.stdout) as SeparatorJson).source;
     };
-    const first = source('--seed', '7');
-    expect(source('--seed', '7')).toBe(first);
+    const first = await source('--seed', '7');
+    expect(await source('--seed', '7')).toBe(first);
     expect(first).toBeGreaterThanOrEqual(0);
     expect(first).toBeLessThan(766);
-    expect([source(), source('--seed', '8'), source('--seed', '9')]).not.toEqual([first, first, first]);
+    expect([await source(), await source('--seed', '8'), await source('--seed', '9')]).not.toEqual([first, first, first]);
   });
 
-  it('reports a source without a separator as a status, not an error: exit 0, JSON, one warning', () => {
+  it('reports a source without a separator as a status, not an error: exit 0, JSON, one warning', async () => {
     // A sphere has no feature for a loop to separate: the loop must shrink to a point (or fail earlier).
     const mesh = icosphere(3);
     const sphere = path.join(tmp, 'sphere.off');
     writeFileSync(sphere, offText(mesh));
 
-    const result = cscd('separator', sphere, '--source', '0');
+    const result = await cscd('separator', sphere, '--source', '0');
     expect(result.status).toBe(0);
     const failed = JSON.parse(result.stdout) as SeparatorJson;
     expect(Object.keys(failed)).toEqual(KEYS);
@@ -137,7 +137,7 @@ describe('cscd separator', () => {
     expect(result.stderr).toBe(`cscd: warning: ${sphere}: no separator from source 0: ${failed.status} (${failed.message})\n`);
   });
 
-  it('rejects bad flags with a usage error (exit 2, one cscd: line)', () => {
+  it('rejects bad flags with a usage error (exit 2, one cscd: line)', async () => {
     for (const [args, message] of [
       [['--target', 'foo'], "--target must be one of euclid, geodesic, got 'foo'"],
       [['--angle-threshold', 'abc'], "--angle-threshold must be a number, got 'abc'"],
@@ -148,7 +148,7 @@ describe('cscd separator', () => {
       [['--seed', '1.5'], "--seed must be an integer from 0 to 4294967295, got '1.5'"],
       [['--source', '7200'], "--source must be a vertex index from 0 to 7199, got '7200'"],
     ] as [string[], string][]) {
-      const result = cscd('separator', torus, ...args);
+      const result = await cscd('separator', torus, ...args);
       expect(result.status).toBe(2);
       expect(result.stdout).toBe('');
       expect(result.stderr).toBe(`cscd: ${message}\n`);

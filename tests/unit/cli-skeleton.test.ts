@@ -1,4 +1,4 @@
-// `cscd skeleton` run as users run it: a child process writing the curve skeleton in each format.
+// `cscd skeleton` (in-process) writing the curve skeleton in each format.
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
@@ -24,9 +24,9 @@ const VERTICES = 766;
 describe('cscd skeleton', () => {
   let text: string;
   let json: SkeletonJson;
-  beforeAll(() => {
+  beforeAll(async () => {
     const out = path.join(tmp, 'skel.json');
-    const result = cscd('skeleton', twoTorus, '--out', out);
+    const result = await cscd('skeleton', twoTorus, '--out', out);
     // Not a terminal and no --verbose: nothing on stderr.
     expect(result).toEqual({ status: 0, stdout: '', stderr: '' });
     text = readFileSync(out, 'utf8');
@@ -67,22 +67,27 @@ describe('cscd skeleton', () => {
     expect(Object.values(json.stats.timings).every((ms) => Number.isFinite(ms) && ms >= 0)).toBe(true);
   });
 
-  it('gives the same JSON, byte for byte but the timings, from the same seed', () => {
-    const again = cscd('skeleton', twoTorus);
+  it('gives the same JSON, byte for byte but the timings, from the same seed', async () => {
+    const again = await cscd('skeleton', twoTorus);
     expect(again.status).toBe(0);
     expect(withoutTimings(again.stdout)).toBe(withoutTimings(text));
     expect(Object.keys((JSON.parse(again.stdout) as SkeletonJson).stats.timings)).toEqual(Object.keys(json.stats.timings));
   }, 120_000);
 
-  it('writes PLY, OBJ and SWC that read back to the same skeleton (format from --format, else the --out extension)', () => {
+  it('writes PLY, OBJ and SWC that read back to the same skeleton (format from --format, else the --out extension)', async () => {
+    // A fixed small N (the formats are under test, not N), at which the skeleton still has both cycles.
+    const n = ['--n', '12'];
     const ply = path.join(tmp, 'skel.ply');
     const swc = path.join(tmp, 'skel.txt');
     const runs = {
-      ply: cscd('skeleton', twoTorus, '--out', ply),
-      obj: cscd('skeleton', twoTorus, '--format', 'obj', '--verbose'),
-      swc: cscd('skeleton', twoTorus, '--format', 'swc', '--out', swc),
+      json: await cscd('skeleton', twoTorus, ...n),
+      ply: await cscd('skeleton', twoTorus, ...n, '--out', ply),
+      obj: await cscd('skeleton', twoTorus, ...n, '--format', 'obj', '--verbose'),
+      swc: await cscd('skeleton', twoTorus, ...n, '--format', 'swc', '--out', swc),
     };
     for (const [format, result] of Object.entries(runs)) expect(result.status, format).toBe(0);
+    const reference = JSON.parse(runs.json.stdout) as SkeletonJson;
+    expect(reference.stats).toMatchObject({ n: 12, cycles: 2 });
     const files = {
       ply: readFileSync(ply, 'utf8'),
       obj: runs.obj.stdout,
@@ -91,30 +96,30 @@ describe('cscd skeleton', () => {
     expect(files.ply.startsWith('ply\nformat ascii 1.0\n')).toBe(true);
     expect(files.swc).toMatch(/\n# cycle edges: \d+-\d+ \d+-\d+\n/);
 
-    const nodes = Float64Array.from(json.nodes.flat());
-    const edges = json.edges.map(([a, b]) => `${Math.min(a, b)}-${Math.max(a, b)}`).sort();
+    const nodes = Float64Array.from(reference.nodes.flat());
+    const edges = reference.edges.map(([a, b]) => `${Math.min(a, b)}-${Math.max(a, b)}`).sort();
     for (const [format, content] of Object.entries(files)) {
       const read = parseSkeleton(content, `skeleton.${format}`);
       expect(read.format).toBe(format);
       expect(read.nodes, format).toEqual(nodes);
-      expect(read.radii, format).toEqual(Float64Array.from(json.radii));
+      expect(read.radii, format).toEqual(Float64Array.from(reference.radii));
       const pairs: string[] = [];
       for (let k = 0; k < read.edges.length; k += 2) pairs.push(`${Math.min(read.edges[k], read.edges[k + 1])}-${Math.max(read.edges[k], read.edges[k + 1])}`);
       expect(pairs.sort(), format).toEqual(edges);
     }
 
     // --verbose: the summary line, although stderr is not a terminal.
-    expect(runs.obj.stderr).toBe(`cscd: skeleton of two_torus.ply: ${json.nodes.length} nodes, ${json.edges.length} edges, 2 cycles, `
-      + `N = ${json.stats.n} (${json.stats.packed} of ${json.stats.candidates} separators kept), ${/, ([\d.]+) s\n$/.exec(runs.obj.stderr)?.[1]} s\n`);
+    expect(runs.obj.stderr).toBe(`cscd: skeleton of two_torus.ply: ${reference.nodes.length} nodes, ${reference.edges.length} edges, 2 cycles, `
+      + `N = ${reference.stats.n} (${reference.stats.packed} of ${reference.stats.candidates} separators kept), ${/, ([\d.]+) s\n$/.exec(runs.obj.stderr)?.[1]} s\n`);
     expect(runs.ply.stderr).toBe('');
   }, 240_000);
 
-  it('writes a one-node skeleton for a sphere (no separator kept), with a warning and exit code 0', () => {
+  it('writes a one-node skeleton for a sphere (no separator kept), with a warning and exit code 0', async () => {
     const mesh = icosphere(3);
     const sphere = path.join(tmp, 'sphere.off');
     writeFileSync(sphere, offText(mesh));
 
-    const result = cscd('skeleton', sphere, '--n', '10');
+    const result = await cscd('skeleton', sphere, '--n', '10');
     expect(result.status).toBe(0);
     expect(result.stderr).toBe(`cscd: warning: ${sphere}: no separator was kept: the skeleton is one node per connected component\n`);
     const one = JSON.parse(result.stdout) as SkeletonJson;
@@ -128,20 +133,20 @@ describe('cscd skeleton', () => {
     expect(one.radii[0]).toBeCloseTo(1, 2);
   }, 120_000);
 
-  it('refines a coarse mesh to compute on, and writes the skeleton for the mesh as given', () => {
+  it('refines a coarse mesh to compute on, and writes the skeleton for the mesh as given', async () => {
     // fertility_9k decimated to 200 faces: genus 4, which it loses unrefined (docs/refine.md).
     const mesh = decimate(readMesh(sharedMesh('fertility_9k.ply')), 200);
     const coarse = path.join(tmp, 'coarse.off');
     writeFileSync(coarse, offText(mesh));
     const faces = mesh.triangles.length / 3;
 
-    const info = JSON.parse(cscd('info', coarse).stdout) as { faces: number; refined: { fromVertices: number; fromFaces: number; toFaces: number; levels: number } };
+    const info = JSON.parse((await cscd('info', coarse)).stdout) as { faces: number; refined: { fromVertices: number; fromFaces: number; toFaces: number; levels: number } };
     expect(info.faces).toBe(faces);
     expect(info.refined.fromVertices).toBe(mesh.positions.length / 3);
     expect(info.refined.fromFaces).toBe(faces);
     expect(info.refined.toFaces).toBe(faces * 4 ** info.refined.levels);
 
-    const result = cscd('skeleton', coarse, '--n', '40');
+    const result = await cscd('skeleton', coarse, '--n', '40');
     expect(result.status, result.stderr).toBe(0);
     expect(result.stderr).toBe(`cscd: refined ${coarse} for computation from ${faces} to ${info.refined.toFaces} faces (the same surface, sampled more densely)\n`);
     const skeleton = JSON.parse(result.stdout) as SkeletonJson;
@@ -153,7 +158,7 @@ describe('cscd skeleton', () => {
 
 // These stop before the core is loaded.
 describe('cscd skeleton usage', () => {
-  it('rejects a bad --format, --n or --prune-length-factor with a usage error (exit 2, one cscd: line)', () => {
+  it('rejects a bad --format, --n or --prune-length-factor with a usage error (exit 2, one cscd: line)', async () => {
     for (const [args, message] of [
       [['--format', 'off'], "--format must be one of json, ply, obj, swc, got 'off'"],
       [['--n', '0'], "--n must be auto or an integer from 1 to 100000, got '0'"],
@@ -163,16 +168,16 @@ describe('cscd skeleton usage', () => {
       [['--prune-length-factor', 'x'], "--prune-length-factor must be a number, got 'x'"],
       [['--prune-length-factor=-1'], "--prune-length-factor must be a number from 0 to 1000, got '-1'"],
     ] as [string[], string][]) {
-      const result = cscd('skeleton', twoTorus, ...args);
+      const result = await cscd('skeleton', twoTorus, ...args);
       expect(result, args.join(' ')).toEqual({ status: 2, stdout: '', stderr: `cscd: ${message}\n` });
     }
     // Stage-2 options are not flags of `cscd separator`.
-    expect(cscd('separator', twoTorus, '--n', '5')).toMatchObject({ status: 2, stdout: '' });
+    expect(await cscd('separator', twoTorus, '--n', '5')).toMatchObject({ status: 2, stdout: '' });
   });
 
-  it('is listed in the help with its options', () => {
-    expect(cscd('--help').stdout).toMatch(/skeleton <mesh> \[options\]/);
-    const help = cscd('help', 'skeleton').stdout;
+  it('is listed in the help with its options', async () => {
+    expect((await cscd('--help')).stdout).toMatch(/skeleton <mesh> \[options\]/);
+    const help = (await cscd('help', 'skeleton')).stdout;
     expect(help).toMatch(/--n N\|auto\s+number of sources/);
     expect(help).toMatch(/--format json\|ply\|obj\|swc/);
     expect(help).toMatch(/--prune-length-factor X/);

@@ -28,6 +28,7 @@
  * returned as they are for the core to refuse with its own message.
  */
 import type { MeshArrays } from '../core/types.ts';
+import { UnionFind } from '../graph/union-find.ts';
 import { MeshFormatError } from './types.ts';
 
 /** Welding reach, relative to the bounding-box diagonal: far below any real feature, far above rounding. */
@@ -414,20 +415,6 @@ function buildEdges(tri: Uint32Array, nV: number): Edges {
   return { edgeOf, edgeStart, edgeCorners, hasNonManifoldEdge };
 }
 
-/** Union-find over corners, with path halving. */
-function makeUnionFind(n: number) {
-  const parent = identity(n);
-  const find = (x: number) => {
-    while (parent[x] !== x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  const unite = (a: number, b: number) => {
-    const ra = find(a), rb = find(b);
-    if (ra !== rb) parent[Math.max(ra, rb)] = Math.min(ra, rb);
-  };
-  return { find, unite };
-}
-
 /**
  * Joins the corners of each vertex across edges into fans, then gives every fan of a vertex but the
  * first (in face order) a copy of it, renumbering `tri` in place. Edges with two faces always join
@@ -437,11 +424,11 @@ function makeUnionFind(n: number) {
 function splitNonManifold(tri: Uint32Array, edges: Edges, nV: number, mode: 'keep-pair' | 'cut-all') {
   const { edgeStart, edgeCorners } = edges;
   const corners = tri.length;
-  const uf = makeUnionFind(corners);
+  const fans = new UnionFind(corners);
   const cornerAt = (c: number, v: number) => (tri[c] === v ? c : next(c));
   const join = (c1: number, c2: number) => {
-    uf.unite(cornerAt(c1, tri[c1]), cornerAt(c2, tri[c1]));
-    uf.unite(cornerAt(c1, tri[next(c1)]), cornerAt(c2, tri[next(c1)]));
+    fans.union(cornerAt(c1, tri[c1]), cornerAt(c2, tri[c1]));
+    fans.union(cornerAt(c1, tri[next(c1)]), cornerAt(c2, tri[next(c1)]));
   };
   const onCutEdge = new Uint8Array(nV);
   const nonManifold: number[][] = []; // the corners of each edge with more than two faces
@@ -472,7 +459,7 @@ function splitNonManifold(tri: Uint32Array, edges: Edges, nV: number, mode: 'kee
   const copyOf: number[] = [];
   let edgeCopies = 0, pointCopies = 0, pointVertices = 0;
   for (let c = 0; c < corners; c++) {
-    const root = uf.find(c), v = tri[c];
+    const root = fans.find(c), v = tri[c];
     if (fanVertex[root] < 0) {
       if (!taken[v]) {
         taken[v] = 1;

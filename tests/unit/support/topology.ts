@@ -1,8 +1,9 @@
 // Skeleton checks that need no test runner: shared by the unit tests and scripts/check-corpus.ts.
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import type { Core, MeshArrays } from '../../../lib/core/index.ts';
+import type { Core } from '../../../lib/core/index.ts';
 import { graphTopology } from '../../../lib/graph/topology.ts';
+import { windingNumber } from '../../../lib/mesh/winding.ts';
 import { readMesh } from './meshes.ts';
 import { sharedData, sharedMesh } from '../../paths.ts';
 
@@ -18,19 +19,6 @@ export function closedConnectedMeshes(): { file: string; genus: number }[] {
 
 export const point = (flat: ArrayLike<number>, i: number) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]];
 export const distance3 = (a: number[], b: number[]) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-
-/** Generalised winding number of a closed mesh around p (1 inside, 0 outside). */
-export function windingNumber(mesh: MeshArrays, p: number[]): number {
-  let total = 0;
-  for (let f = 0; f < mesh.triangles.length / 3; f++) {
-    const [a, b, c] = [0, 1, 2].map((k) => point(mesh.positions, mesh.triangles[3 * f + k]).map((x, j) => x - p[j]));
-    const [la, lb, lc] = [a, b, c].map((v) => Math.hypot(v[0], v[1], v[2]));
-    const dot = (u: number[], v: number[]) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-    const det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-    total += 2 * Math.atan2(det, la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb);
-  }
-  return total / (4 * Math.PI);
-}
 
 /** What is wrong with the auto-mode skeleton of a closed connected mesh: not connected, cycles other than the genus, nodes outside. */
 export function topologyProblems(core: Core, file: string, genus: number): string[] {

@@ -50,8 +50,9 @@ export interface PlyElement {
 export interface PlyHeader {
   encoding: PlyEncoding;
   elements: PlyElement[];
-  /** The text of the `comment` and `obj_info` lines, in order. */
+  /** The text of the `comment` lines, in order. */
   comments: string[];
+  /** The text of the `obj_info` lines, in order. */
   objInfo: string[];
   /** Byte offset of the first data byte, just after `end_header` and its line break. */
   dataStart: number;
@@ -69,9 +70,9 @@ export interface PlyErrors {
 /** Checks run while a list property is read, so that a message can name the line (ascii) or row at fault. */
 export interface PlyListCheck {
   /** A message if a row's list may not have this length (asked before its items are read). */
-  length?(row: number, length: number): string | undefined;
+  length?: (row: number, length: number) => string | undefined;
   /** A message if the item may not stand in a row's list. */
-  item?(row: number, item: number): string | undefined;
+  item?: (row: number, item: number) => string | undefined;
   /** Set when the items are integers, e.g. 'vertex index': ascii items are then integer tokens, named so in messages. */
   integers?: string;
 }

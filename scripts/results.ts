@@ -17,8 +17,10 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { CoreError, loadCoreNode, wasmPath, type CandidateFate, type Core, type MeshArrays, type MeshFacts, type Skeleton } from '../lib/core/node.ts';
 import { defaultOptions } from '../lib/core/options.ts';
+import { graphTopology } from '../lib/graph/topology.ts';
+import { UnionFind } from '../lib/graph/union-find.ts';
 import { parseMesh } from '../lib/io/index.ts';
-import { SKELETON_WRITERS, spanningForest } from '../lib/io/skeleton.ts';
+import { SKELETON_WRITERS } from '../lib/io/skeleton.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const sharedMeshes = path.resolve(repoRoot, '..', 'shared', 'data', 'meshes');
@@ -110,6 +112,8 @@ function regionHandles(mesh: MeshArrays, vertexToNode: Uint32Array): [number, nu
   }
 
   const handles: [number, number][] = [];
+  // Faces join only faces of their own region: one union-find serves every region.
+  const pieces = new UnionFind(faceCount);
   for (const [node, { faces, boundary }] of patches) {
     // Boundary loops: from u -> v, turn around v inside the patch to the next boundary half-edge.
     const index = new Map<number, number>(boundary.map(([, u, v], i) => [u * vertexCount + v, i]));
@@ -140,21 +144,13 @@ function regionHandles(mesh: MeshArrays, vertexToNode: Uint32Array): [number, nu
     for (const v of fans.keys()) vertices += Math.max(1, outgoing.get(v) ?? 0);
     const edges = (3 * faces.length + boundary.length) / 2;
     // Components of the faces (through shared edges).
-    const parent = new Map<number, number>(faces.map((f) => [f, f]));
-    const find = (x: number): number => {
-      while (parent.get(x) !== x) {
-        parent.set(x, parent.get(parent.get(x)!)!);
-        x = parent.get(x)!;
-      }
-      return x;
-    };
     for (const f of faces) {
       for (let k = 0; k < 3; k++) {
         const twin = faceOf.get(triangles[3 * f + (k + 1) % 3] * vertexCount + triangles[3 * f + k]);
-        if (twin !== undefined && faceRegion[twin] === node) parent.set(find(f), find(twin));
+        if (twin !== undefined && faceRegion[twin] === node) pieces.union(f, twin);
       }
     }
-    const components = new Set(faces.map(find)).size;
+    const components = new Set(faces.map((f) => pieces.find(f))).size;
     const genus = (2 * components - (vertices - edges + faces.length) - loops) / 2;
     if (genus !== 0) handles.push([node, genus]);
   }
@@ -176,9 +172,9 @@ async function run(file: string, state: { core: Core }): Promise<Row> {
     } finally {
       surface.dispose();
     }
-    const { components, cycleEdges } = spanningForest(row.skeleton.nodes.length / 3, row.skeleton.edges);
+    const { components, cycleRank } = graphTopology(row.skeleton.nodes.length / 3, row.skeleton.edges);
     row.components = components;
-    row.graphCycles = cycleEdges.length;
+    row.graphCycles = cycleRank;
     row.degrees = new Array<number>(row.skeleton.nodes.length / 3).fill(0);
     for (const node of row.skeleton.edges) row.degrees[node]++;
     row.handles = regionHandles(mesh, row.skeleton.vertexToNode);

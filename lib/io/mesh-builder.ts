@@ -51,11 +51,11 @@ export class MeshBuilder {
     this.triangleIndexCount = n + 3;
   }
 
-  /** Adds polygon `poly[0..n)` (n >= 3) as the fan (p0, p[i], p[i+1]), which keeps its orientation. */
-  addPolygon(poly: ArrayLike<number>, n: number): void {
+  /** Adds polygon `p = poly[start..start + n)` (n >= 3) as the fan (p0, p[i], p[i+1]), which keeps its orientation. */
+  addPolygon(poly: ArrayLike<number>, n: number, start = 0): void {
     if (n > 3) this.polygonsSplit++;
-    const first = poly[0];
-    for (let i = 1; i + 1 < n; i++) this.addTriangle(first, poly[i], poly[i + 1]);
+    const first = poly[start];
+    for (let i = start + 1; i + 1 < start + n; i++) this.addTriangle(first, poly[i], poly[i + 1]);
   }
 
   /** Checks that there is something to return and trims the arrays to size. */

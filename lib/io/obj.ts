@@ -10,10 +10,6 @@ import type { ParsedMesh } from './types.ts';
 const LF = 0x0a;
 const HASH = 0x23;
 const SLASH = 0x2f;
-const MINUS = 0x2d;
-const PLUS = 0x2b;
-const ZERO = 0x30;
-const NINE = 0x39;
 const LOWER_V = 0x76;
 const LOWER_F = 0x66;
 
@@ -69,21 +65,14 @@ export function parseObj(bytes: Uint8Array): ParsedMesh {
 
 /** Reads the vertex part of `i`, `i/t`, `i//n` or `i/t/n` and skips the rest of the token. */
 function readIndex(s: TextScanner): number {
-  const { bytes } = s;
-  const len = bytes.length;
-  let p = s.pos;
-  let negative = false;
-  if (bytes[p] === MINUS || bytes[p] === PLUS) negative = bytes[p++] === MINUS;
-  const digitsStart = p;
-  let value = 0;
-  let b = 0;
-  while (p < len && (b = bytes[p]) >= ZERO && b <= NINE) {
-    value = value * 10 + (b - ZERO);
-    p++;
+  const start = s.pos;
+  const value = s.readDigits();
+  const { bytes, pos } = s;
+  const endsWell = pos >= bytes.length || bytes[pos] === SLASH || bytes[pos] === LF || bytes[pos] === HASH || isBlank(bytes[pos]);
+  if (Number.isNaN(value) || !endsWell || Math.abs(value) > 0xffffffff) {
+    s.pos = start;
+    s.fail(`bad vertex index '${clip(s.peekToken())}'`);
   }
-  const endsWell = p >= len || bytes[p] === SLASH || bytes[p] === LF || bytes[p] === HASH || isBlank(bytes[p]);
-  if (p === digitsStart || !endsWell || value > 0xffffffff) s.fail(`bad vertex index '${clip(s.peekToken())}'`);
-  s.pos = p;
   s.skipToken();
-  return negative ? -value : value;
+  return value;
 }

@@ -28,6 +28,8 @@
  * returned as they are for the core to refuse with its own message.
  */
 import type { MeshArrays } from '../core/types.ts';
+import { UnionFind } from '../graph/union-find.ts';
+import { windingNumber } from '../mesh/winding.ts';
 import { MeshFormatError } from './types.ts';
 
 /** Welding reach, relative to the bounding-box diagonal: far below any real feature, far above rounding. */
@@ -414,20 +416,6 @@ function buildEdges(tri: Uint32Array, nV: number): Edges {
   return { edgeOf, edgeStart, edgeCorners, hasNonManifoldEdge };
 }
 
-/** Union-find over corners, with path halving. */
-function makeUnionFind(n: number) {
-  const parent = identity(n);
-  const find = (x: number) => {
-    while (parent[x] !== x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  const unite = (a: number, b: number) => {
-    const ra = find(a), rb = find(b);
-    if (ra !== rb) parent[Math.max(ra, rb)] = Math.min(ra, rb);
-  };
-  return { find, unite };
-}
-
 /**
  * Joins the corners of each vertex across edges into fans, then gives every fan of a vertex but the
  * first (in face order) a copy of it, renumbering `tri` in place. Edges with two faces always join
@@ -437,11 +425,11 @@ function makeUnionFind(n: number) {
 function splitNonManifold(tri: Uint32Array, edges: Edges, nV: number, mode: 'keep-pair' | 'cut-all') {
   const { edgeStart, edgeCorners } = edges;
   const corners = tri.length;
-  const uf = makeUnionFind(corners);
+  const fans = new UnionFind(corners);
   const cornerAt = (c: number, v: number) => (tri[c] === v ? c : next(c));
   const join = (c1: number, c2: number) => {
-    uf.unite(cornerAt(c1, tri[c1]), cornerAt(c2, tri[c1]));
-    uf.unite(cornerAt(c1, tri[next(c1)]), cornerAt(c2, tri[next(c1)]));
+    fans.union(cornerAt(c1, tri[c1]), cornerAt(c2, tri[c1]));
+    fans.union(cornerAt(c1, tri[next(c1)]), cornerAt(c2, tri[next(c1)]));
   };
   const onCutEdge = new Uint8Array(nV);
   const nonManifold: number[][] = []; // the corners of each edge with more than two faces
@@ -472,7 +460,7 @@ function splitNonManifold(tri: Uint32Array, edges: Edges, nV: number, mode: 'kee
   const copyOf: number[] = [];
   let edgeCopies = 0, pointCopies = 0, pointVertices = 0;
   for (let c = 0; c < corners; c++) {
-    const root = uf.find(c), v = tri[c];
+    const root = fans.find(c), v = tri[c];
     if (fanVertex[root] < 0) {
       if (!taken[v]) {
         taken[v] = 1;
@@ -550,13 +538,14 @@ function orient(pos: Float64Array, tri: Uint32Array, edges: Edges) {
     return { faces, box, volume: signedVolume(pos, tri, faces, box) };
   }).filter((c) => Math.abs(c.volume) > FLAT_VOLUME * boxDiagonal(c.box) ** 3);
   const boxesAround = boxIndex(closed.map((c) => c.box));
+  const mesh = { positions: pos, triangles: tri };
   const reverse = closed.filter((c, i) => {
     // Components may touch: one point could lie on another's surface, so a few points vote.
     const points = samplePoints(pos, tri, c.faces);
     const votes = new Map<number, number>();
     for (const p of points) {
       for (const j of boxesAround(p)) {
-        if (j !== i && Math.abs(windingNumber(pos, tri, closed[j].faces, p)) > 0.5) votes.set(j, (votes.get(j) ?? 0) + 1);
+        if (j !== i && Math.abs(windingNumber(mesh, p, closed[j].faces)) > 0.5) votes.set(j, (votes.get(j) ?? 0) + 1);
       }
     }
     let depth = 0;
@@ -641,22 +630,6 @@ function signedVolume(pos: Float64Array, tri: Uint32Array, faces: Int32Array, bo
     sixTimes += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
   }
   return sixTimes / 6;
-}
-
-/** Generalised winding number of the faces around point p (solid angles, Van Oosterom and Strackee). */
-function windingNumber(pos: Float64Array, tri: Uint32Array, faces: Int32Array, p: number[]): number {
-  let total = 0;
-  for (const f of faces) {
-    const a = 3 * tri[3 * f], b = 3 * tri[3 * f + 1], c = 3 * tri[3 * f + 2];
-    const ax = pos[a] - p[0], ay = pos[a + 1] - p[1], az = pos[a + 2] - p[2];
-    const bx = pos[b] - p[0], by = pos[b + 1] - p[1], bz = pos[b + 2] - p[2];
-    const cx = pos[c] - p[0], cy = pos[c + 1] - p[1], cz = pos[c + 2] - p[2];
-    const la = Math.hypot(ax, ay, az), lb = Math.hypot(bx, by, bz), lc = Math.hypot(cx, cy, cz);
-    const det = ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
-    const denominator = la * lb * lc + (ax * bx + ay * by + az * bz) * lc + (bx * cx + by * cy + bz * cz) * la + (cx * ax + cy * ay + cz * az) * lb;
-    total += 2 * Math.atan2(det, denominator);
-  }
-  return total / (4 * Math.PI);
 }
 
 function flipFace(tri: Uint32Array, f: number): void {

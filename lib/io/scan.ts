@@ -195,6 +195,22 @@ export class TextScanner {
   /** Reads an integer (after blanks on the current line); anything else is an error naming the line. */
   readInt(what: string): number {
     this.skipBlanks();
+    const start = this.pos;
+    const value = this.readDigits();
+    const { bytes, pos } = this;
+    if (Number.isNaN(value) || (pos < bytes.length && !isTokenEnd(bytes[pos], this.hashComments)) || Math.abs(value) > Number.MAX_SAFE_INTEGER) {
+      this.pos = start;
+      const token = this.peekToken();
+      this.fail(token === '' ? `expected ${what}, found the end of the ${pos >= bytes.length ? 'file' : 'line'}` : `bad ${what} '${clip(token)}'`);
+    }
+    return value;
+  }
+
+  /**
+   * Reads an optional sign and decimal digits at `pos` and moves past them, or returns NaN (and stays)
+   * when there are no digits: what may follow is the caller's to check.
+   */
+  readDigits(): number {
     const { bytes } = this;
     const len = bytes.length;
     let p = this.pos;
@@ -207,10 +223,7 @@ export class TextScanner {
       value = value * 10 + (b - ZERO);
       p++;
     }
-    if (p === digitsStart || (p < len && !isTokenEnd(bytes[p], this.hashComments)) || value > Number.MAX_SAFE_INTEGER) {
-      const token = this.peekToken();
-      this.fail(token === '' ? `expected ${what}, found the end of the ${p >= len ? 'file' : 'line'}` : `bad ${what} '${clip(token)}'`);
-    }
+    if (p === digitsStart) return NaN;
     this.pos = p;
     return negative ? -value : value;
   }

@@ -19,6 +19,7 @@
  */
 import { defaultOptions } from '../core/options.ts';
 import type { Options, Polyline, Skeleton } from '../core/types.ts';
+import { findElement, findProperty, parsePlyHeader, readPlyElements, type PlyErrors, type PlyProperty } from './ply-elements.ts';
 
 export type SkeletonFormat = 'json' | 'ply' | 'obj' | 'swc';
 
@@ -283,8 +284,8 @@ function sniff(data: Uint8Array): SkeletonFormat {
 }
 
 interface Raw {
-  nodes: number[];
-  radii: number[] | null;
+  nodes: number[] | Float64Array;
+  radii: number[] | Float64Array | null;
   edges: number[];
 }
 
@@ -420,125 +421,47 @@ function readSwc(text: string): Raw {
   return { nodes: rows.flatMap((row) => row.xyz), radii: rows.map((row) => row.radius), edges };
 }
 
-// PLY: small files, so the header is parsed with strings; ascii and binary data are both read.
+// PLY: the header and data are read by ply-elements.ts, as for meshes.
 
-const PLY_TYPES: Record<string, { size: number; get: (view: DataView, offset: number, le: boolean) => number }> = {};
-for (const [names, size, get] of [
-  [['char', 'int8'], 1, (v, o) => v.getInt8(o)],
-  [['uchar', 'uint8'], 1, (v, o) => v.getUint8(o)],
-  [['short', 'int16'], 2, (v, o, le) => v.getInt16(o, le)],
-  [['ushort', 'uint16'], 2, (v, o, le) => v.getUint16(o, le)],
-  [['int', 'int32'], 4, (v, o, le) => v.getInt32(o, le)],
-  [['uint', 'uint32'], 4, (v, o, le) => v.getUint32(o, le)],
-  [['float', 'float32'], 4, (v, o, le) => v.getFloat32(o, le)],
-  [['double', 'float64'], 8, (v, o, le) => v.getFloat64(o, le)],
-] as [string[], number, (view: DataView, offset: number, le: boolean) => number][]) {
-  for (const name of names) PLY_TYPES[name] = { size, get };
-}
-
-interface PlyProperty {
-  name: string;
-  type: string;
-  countType?: string;
-}
-
-interface PlyElement {
-  name: string;
-  count: number;
-  properties: PlyProperty[];
-}
+const PLY_ERRORS: PlyErrors = {
+  fail: (message) => fail('ply', message),
+  truncated: (message) => fail('ply', `the file ends before the data the header announces (${message})`),
+};
 
 function readPly(data: Uint8Array): Raw {
-  // The header is ASCII; latin1 keeps one character per byte so that offsets match.
-  let headerText = '';
-  for (let i = 0; i < Math.min(data.length, 1 << 16); i++) headerText += String.fromCharCode(data[i]);
-  if (!/^ply\r?\n/.test(headerText)) fail('ply', "missing 'ply' magic line");
-  const end = /(^|\n|\r)end_header[ \t]*(\r\n|\n|\r|$)/.exec(headerText);
-  if (!end) fail('ply', "no 'end_header' line in the first 64 KiB");
-  const dataStart = end.index + end[0].length;
-  let encoding = '';
-  const elements: PlyElement[] = [];
-  for (const [n, line] of headerText.slice(0, end.index).split(/\r\n|\r|\n/).entries()) {
-    const words = line.trim().split(/\s+/);
-    const where = `header line ${n + 1}`;
-    if (words[0] === 'format') encoding = words[1];
-    else if (words[0] === 'element') {
-      const count = Number(words[2]);
-      if (words.length !== 3 || !Number.isSafeInteger(count) || count < 0) fail('ply', `${where}: expected 'element <name> <count>'`);
-      elements.push({ name: words[1], count, properties: [] });
-    } else if (words[0] === 'property') {
-      const element = elements.at(-1);
-      if (!element) fail('ply', `${where}: property before any element`);
-      const property: PlyProperty = words[1] === 'list'
-        ? { name: words[4], type: words[3], countType: words[2] }
-        : { name: words[2], type: words[1] };
-      if (!property.name || !PLY_TYPES[property.type] || (property.countType !== undefined && !PLY_TYPES[property.countType])) {
-        fail('ply', `${where}: expected 'property <type> <name>' or 'property list <type> <type> <name>' with known types`);
-      }
-      element.properties.push(property);
-    }
-  }
-  if (encoding !== 'ascii' && encoding !== 'binary_little_endian' && encoding !== 'binary_big_endian') {
-    fail('ply', `unknown format '${encoding}'`);
-  }
-  const vertex = elements.find((e) => e.name === 'vertex');
+  const header = parsePlyHeader(data, PLY_ERRORS);
+  const vertex = findElement(header, 'vertex');
   if (!vertex) fail('ply', "no 'vertex' element");
-  for (const axis of ['x', 'y', 'z']) {
-    const property = vertex.properties.find((p) => p.name === axis);
-    if (!property || property.countType) fail('ply', `the vertex element has no '${axis}' property`);
+  for (const axis of ['x', 'y', 'z']) if (!isScalar(findProperty(vertex, axis))) fail('ply', `the vertex element has no '${axis}' property`);
+  // An edge is a vertex_indices (or vertex_index) list, read as a polyline, or vertex1 and vertex2.
+  const edge = findElement(header, 'edge');
+  const list = edge && findProperty(edge, 'vertex_indices', 'vertex_index');
+  const chainList = list?.countType ? list.name : null;
+  const noEnds = (row: number) => `edge ${row}: no vertex1 and vertex2 (or vertex_indices list)`;
+  if (edge && edge.count > 0 && !chainList && !(isScalar(findProperty(edge, 'vertex1')) && isScalar(findProperty(edge, 'vertex2')))) {
+    fail('ply', noEnds(0));
   }
-  const hasRadius = vertex.properties.some((p) => p.name === 'radius' && !p.countType);
+  const elements = readPlyElements(data, header, {
+    vertex: ['x', 'y', 'z', 'radius'],
+    edge: chainList ? [{ name: chainList, check: { length: (row, n) => (n < 2 ? noEnds(row) : undefined) } }] : ['vertex1', 'vertex2'],
+  }, PLY_ERRORS);
 
-  // Every element's rows as named values (a list as an array), read from text tokens or binary.
-  let next: (type: string) => number;
-  if (encoding === 'ascii') {
-    const tokens = new TextDecoder().decode(data.subarray(dataStart)).split(/\s+/).filter((t) => t !== '');
-    let t = 0;
-    next = () => {
-      if (t >= tokens.length) fail('ply', 'the file ends before the data the header announces');
-      const value = parseNumberToken(tokens[t]);
-      if (Number.isNaN(value) && !/nan/i.test(tokens[t])) fail('ply', `'${tokens[t]}' is not a number`);
-      t++;
-      return value;
-    };
-  } else {
-    const view = new DataView(data.buffer, data.byteOffset, data.byteLength);
-    const le = encoding === 'binary_little_endian';
-    let offset = dataStart;
-    next = (type) => {
-      const { size, get } = PLY_TYPES[type];
-      if (offset + size > data.length) fail('ply', 'the file ends before the data the header announces');
-      const value = get(view, offset, le);
-      offset += size;
-      return value;
-    };
-  }
-
-  const nodes: number[] = [];
-  const radii: number[] = [];
+  const { x, y, z, radius } = elements.vertex.scalars;
+  const nodes = new Float64Array(3 * vertex.count);
+  for (let i = 0; i < vertex.count; i++) nodes.set([x[i], y[i], z[i]], 3 * i);
   const edges: number[] = [];
-  for (const element of elements) {
-    for (let row = 0; row < element.count; row++) {
-      const values = new Map<string, number | number[]>();
-      for (const property of element.properties) {
-        if (property.countType) {
-          const count = next(property.countType);
-          if (!Number.isInteger(count) || count < 0) fail('ply', `${element.name} ${row}: bad list length ${count}`);
-          values.set(property.name, Array.from({ length: count }, () => next(property.type)));
-        } else {
-          values.set(property.name, next(property.type));
-        }
-      }
-      if (element === vertex) {
-        nodes.push(...(['x', 'y', 'z'].map((axis) => values.get(axis)) as number[]));
-        if (hasRadius) radii.push(values.get('radius') as number);
-      } else if (element.name === 'edge') {
-        const list = values.get('vertex_indices') ?? values.get('vertex_index');
-        const chain = Array.isArray(list) ? list : [values.get('vertex1'), values.get('vertex2')];
-        if (chain.length < 2 || chain.some((i) => typeof i !== 'number')) fail('ply', `edge ${row}: no vertex1 and vertex2 (or vertex_indices list)`);
-        for (let k = 1; k < chain.length; k++) edges.push(chain[k - 1] as number, chain[k] as number);
-      }
+  if (chainList) {
+    const { lengths, items } = elements.edge.lists[chainList];
+    for (let row = 0, start = 0; row < lengths.length; start += lengths[row++]) {
+      for (let k = start + 1; k < start + lengths[row]; k++) edges.push(items[k - 1], items[k]);
     }
+  } else if (edge && edge.count > 0) {
+    const { vertex1, vertex2 } = elements.edge.scalars;
+    for (let row = 0; row < edge.count; row++) edges.push(vertex1[row], vertex2[row]);
   }
-  return { nodes, radii: hasRadius ? radii : null, edges };
+  return { nodes, radii: radius ?? null, edges };
+}
+
+function isScalar(property: PlyProperty | undefined): boolean {
+  return property !== undefined && !property.countType;
 }

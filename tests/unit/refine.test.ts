@@ -7,8 +7,9 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { CoreError, loadCoreNode, type Core, type MeshArrays } from '../../lib/core/node.ts';
 import { decimate } from '../../lib/mesh/decimate.ts';
 import { REFINE_ABOVE, REFINE_FACE_CAP, REFINE_TO, refine, refinedPoint, refinementOf, subdivide } from '../../lib/mesh/refine.ts';
+import { windingNumber } from '../../lib/mesh/winding.ts';
 import { readMesh } from './support/meshes.ts';
-import { point, windingNumber } from './support/skeletons.ts';
+import { point } from './support/skeletons.ts';
 import { sharedData, sharedMesh } from '../paths.ts';
 
 let core: Core;

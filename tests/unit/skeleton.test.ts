@@ -2,8 +2,9 @@
 // The topology check: skeleton-topology.test.ts (a representative part) and `npm run check:corpus` (every closed shared mesh).
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core, type MeshArrays, type Skeleton } from '../../lib/core/node.ts';
+import { graphTopology } from '../../lib/graph/topology.ts';
 import { extremities, readMesh, torus } from './support/meshes.ts';
-import { componentOf, components, distance3, point } from './support/skeletons.ts';
+import { distance3, point } from './support/skeletons.ts';
 import { sharedMesh } from '../paths.ts';
 
 let core: Core;
@@ -55,7 +56,7 @@ describe('skeleton shape and bookkeeping', () => {
 
   it('gives one piece per connected component: three rings of one cycle each, the seven shells of a CAD part', () => {
     const rings = skeletonOf('rings.ply');
-    const ringOf = componentOf(rings.radii.length, rings.edges);
+    const ringOf = graphTopology(rings.radii.length, rings.edges).componentOf;
     const pieces = [...new Set(ringOf)];
     expect(pieces).toHaveLength(3);
     for (const piece of pieces) {
@@ -65,7 +66,7 @@ describe('skeleton shape and bookkeeping', () => {
       expect(edges - nodes + 1, 'cycles of one ring').toBe(1);
     }
     const cup = skeletonOf('thingi10k_37361_linkCupBase.ply');
-    expect(components(cup.radii.length, cup.edges)).toBe(7);
+    expect(graphTopology(cup.radii.length, cup.edges).components).toBe(7);
     expect(cup.stats.cycles).toBe(0);
   });
 
@@ -110,21 +111,13 @@ describe('skeleton shape and bookkeeping', () => {
     expect(skeleton.vertexToNode.length).toBe(nV);
     const nodeCount = skeleton.radii.length;
     expect(Math.max(...skeleton.vertexToNode)).toBeLessThan(nodeCount);
-    // Regions are connected on the surface: a flood over same-label edges reaches each label once.
-    const neighbours: number[][] = Array.from({ length: nV }, () => []);
-    for (let f = 0; f < mesh.triangles.length; f += 3)
-      for (let k = 0; k < 3; k++) neighbours[mesh.triangles[f + k]].push(mesh.triangles[f + ((k + 1) % 3)], mesh.triangles[f + ((k + 2) % 3)]);
-    const seen = new Uint8Array(nV);
-    const floods = new Map<number, number>();
-    for (let v = 0; v < nV; v++) {
-      if (seen[v]) continue;
-      const label = skeleton.vertexToNode[v];
-      floods.set(label, (floods.get(label) ?? 0) + 1);
-      const stack = [v];
-      seen[v] = 1;
-      while (stack.length) for (const w of neighbours[stack.pop()!]) if (!seen[w] && skeleton.vertexToNode[w] === label) (seen[w] = 1), stack.push(w);
+    // Regions are connected on the surface: the mesh edges within regions join them into one piece each.
+    const withinRegions: number[] = [];
+    for (let c = 0; c < mesh.triangles.length; c++) {
+      const a = mesh.triangles[c], b = mesh.triangles[c % 3 === 2 ? c - 2 : c + 1];
+      if (skeleton.vertexToNode[a] === skeleton.vertexToNode[b]) withinRegions.push(a, b);
     }
-    for (const count of floods.values()) expect(count).toBe(1);
+    expect(graphTopology(nV, withinRegions).components).toBe(new Set(skeleton.vertexToNode).size);
     // Stats agree with the data.
     expect(skeleton.stats.packed).toBe(skeleton.packed.length);
     expect(skeleton.stats.n).toBe(skeleton.candidates.loops.length);

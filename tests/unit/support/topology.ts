@@ -1,7 +1,9 @@
 // Skeleton checks that need no test runner: shared by the unit tests and scripts/check-corpus.ts.
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import type { Core, MeshArrays } from '../../../lib/core/index.ts';
+import type { Core } from '../../../lib/core/index.ts';
+import { graphTopology } from '../../../lib/graph/topology.ts';
+import { windingNumber } from '../../../lib/mesh/winding.ts';
 import { readMesh } from './meshes.ts';
 import { sharedData, sharedMesh } from '../../paths.ts';
 
@@ -18,34 +20,6 @@ export function closedConnectedMeshes(): { file: string; genus: number }[] {
 export const point = (flat: ArrayLike<number>, i: number) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]];
 export const distance3 = (a: number[], b: number[]) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 
-/** The connected component of every node (its smallest node index). */
-export function componentOf(nodeCount: number, edges: Uint32Array): number[] {
-  const parent = Array.from({ length: nodeCount }, (_, i) => i);
-  const find = (x: number): number => (parent[x] === x ? x : (parent[x] = find(parent[x])));
-  for (let i = 0; i < edges.length; i += 2) {
-    const [a, b] = [find(edges[i]), find(edges[i + 1])];
-    parent[Math.max(a, b)] = Math.min(a, b);
-  }
-  return parent.map((_, i) => find(i));
-}
-
-export function components(nodeCount: number, edges: Uint32Array): number {
-  return new Set(componentOf(nodeCount, edges)).size;
-}
-
-/** Generalised winding number of a closed mesh around p (1 inside, 0 outside). */
-export function windingNumber(mesh: MeshArrays, p: number[]): number {
-  let total = 0;
-  for (let f = 0; f < mesh.triangles.length / 3; f++) {
-    const [a, b, c] = [0, 1, 2].map((k) => point(mesh.positions, mesh.triangles[3 * f + k]).map((x, j) => x - p[j]));
-    const [la, lb, lc] = [a, b, c].map((v) => Math.hypot(v[0], v[1], v[2]));
-    const dot = (u: number[], v: number[]) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-    const det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0]);
-    total += 2 * Math.atan2(det, la * lb * lc + dot(a, b) * lc + dot(b, c) * la + dot(c, a) * lb);
-  }
-  return total / (4 * Math.PI);
-}
-
 /** What is wrong with the auto-mode skeleton of a closed connected mesh: not connected, cycles other than the genus, nodes outside. */
 export function topologyProblems(core: Core, file: string, genus: number): string[] {
   const mesh = readMesh(sharedMesh(file));
@@ -54,10 +28,10 @@ export function topologyProblems(core: Core, file: string, genus: number): strin
   surface.dispose();
   const nodeCount = skeleton.radii.length;
   const problems: string[] = [];
-  const pieces = components(nodeCount, skeleton.edges);
-  if (pieces !== 1) problems.push(`${pieces} components`);
+  const { components, cycleRank } = graphTopology(nodeCount, skeleton.edges);
+  if (components !== 1) problems.push(`${components} components`);
   if (skeleton.stats.cycles !== genus) problems.push(`${skeleton.stats.cycles} cycles for genus ${genus}`);
-  if (skeleton.edges.length / 2 - nodeCount + pieces !== skeleton.stats.cycles) problems.push('stats.cycles is not the cycle rank of the edges');
+  if (cycleRank !== skeleton.stats.cycles) problems.push('stats.cycles is not the cycle rank of the edges');
   // Centring: the nodes lie inside the shape.
   let inside = 0;
   for (let i = 0; i < nodeCount; i++) if (windingNumber(mesh, point(skeleton.nodes, i)) > 0.5) inside++;

@@ -32,7 +32,7 @@ describe('the option specification', () => {
   it('reads each default back from its text, in the CLI and in the address bar', () => {
     for (const o of OPTIONS) expect(parseOptionText(o, String(o.default))).toBe(o.default);
     expect(optionsFromFlags({})).toEqual({ ...defaultOptions });
-    const changed = '#' + OPTIONS.map((o) => `${o.key}=${o.kind === 'switch' ? !o.default : o.kind === 'choice' ? 'geodesic' : o.kind === 'count' ? 7 : o.range[0]}`).join('&');
+    const changed = '#' + OPTIONS.map((o) => `${o.key}=${o.kind === 'switch' ? !o.default : o.kind === 'choice' ? 'geodesic' : o.kind === 'count' ? 7 : o.range[0] === o.default ? o.range[0] + 1 : o.range[0]}`).join('&');
     const options = readUrl(changed).options;
     for (const o of OPTIONS) expect(options[o.key], o.key).not.toBe(o.default);
   });

@@ -16,7 +16,11 @@ try {
   port.on('message', ({ id, sources }: { id: number; sources: Uint32Array }) => {
     try {
       const records: CandidateRecord[] = pipeline.separators(sources);
-      const transfer = records.flatMap((r) => [r.loop.buffer, ...(r.points ? [r.points.kinds.buffer, r.points.elements.buffer, r.points.coords.buffer] : [])]);
+      const transfer = records.flatMap((r) => [
+        r.loop.buffer,
+        ...(r.points ? [r.points.kinds.buffer, r.points.elements.buffer, r.points.coords.buffer] : []),
+        ...(r.reach ? [r.reach.buffer] : []),
+      ]);
       port.postMessage({ id, records }, transfer as ArrayBuffer[]);
     } catch (error) {
       // A WebAssembly abort leaves the module unusable: the pool drops this thread.

@@ -203,8 +203,9 @@ export interface PipelineProgress {
 
 /**
  * A stage-1 candidate as it crosses from the worker that computed it to the pipeline that draws the
- * rounds: exact (the same bits whichever worker computed it). `points` is the realization's own part
- * (on a mesh: the loop's surface points as element kind, index and coordinates).
+ * rounds: exact (the same bits whichever worker computed it). `points` and `reach` are the
+ * realization's own part (on a mesh: the loop's surface points as element kind, index and
+ * coordinates, and the distance field of what it covers).
  */
 export interface CandidateRecord {
   source: number;
@@ -215,6 +216,8 @@ export interface CandidateRecord {
   score: number;
   centroidInside: boolean;
   points?: { kinds: Uint8Array; elements: Uint32Array; coords: Float64Array };
+  /** On a mesh: the geodesic distance from the loop and the source per vertex, what the candidate covers. */
+  reach?: Float64Array;
 }
 
 /**

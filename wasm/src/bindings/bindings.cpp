@@ -171,7 +171,7 @@ val evaluate(const val& positions, const val& triangles, const val& nodes, const
 }
 
 // A mesh candidate's surface points cross exactly: each point's kind (0 vertex, 1 edge, 2 face), its
-// element's index and its coordinates (t along the edge; barycentric in the face).
+// element's index and its coordinates (t along the edge; barycentric in the face); and its reach.
 template <>
 struct CandidateRecord<MeshRealization::Candidate> {
   static val write(const MeshRealization::Candidate& c, const Surface&) {
@@ -198,6 +198,7 @@ struct CandidateRecord<MeshRealization::Candidate> {
     points.set("elements", toTypedArray("Uint32Array", elements));
     points.set("coords", toFloat64Array(coords));
     o.set("points", points);
+    o.set("reach", toFloat64Array(c.reach));
     return o;
   }
 
@@ -218,6 +219,8 @@ struct CandidateRecord<MeshRealization::Candidate> {
       else if (kinds[i] == 1) c.points.emplace_back(mesh.edge(elements[i]), x[0]);
       else c.points.emplace_back(mesh.face(elements[i]), geometrycentral::Vector3{x[0], x[1], x[2]});
     }
+    c.reach = convertJSArrayToNumberVector<double>(o["reach"]);
+    if (c.reach.size() != surface.vertexCount()) throw InputError("a candidate's reach does not match this mesh");
     return c;
   }
 };

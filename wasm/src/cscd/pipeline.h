@@ -7,7 +7,8 @@
 //   Candidate separator(size_t source)          stage 1 from one source (Alg. 2)
 //   size_t nextSource(const std::vector<size_t>& round)   adaptive sampling (Sec. 4.1.7), away from
 //                                               what is covered and from the round's earlier sources
-//   void cover(const Candidate& c)              what the candidate's source and loop now cover
+//   void cover(Candidate& c)                    what the candidate's source and loop now cover (it may
+//                                               release what only covering needed)
 //   double coverage()                           share of the shape near what is covered
 //   double resolution()                         mean sample spacing (edge length)
 //   std::vector<std::vector<size_t>> overlaps(const Selection<Candidate>& kept)   overlap graph of kept
@@ -93,7 +94,7 @@ struct IsRealization {
   static constexpr bool value =
       std::is_base_of_v<Candidate, C> && std::is_same_v<decltype(std::declval<R&>().separator(size_t())), C> &&
       std::is_convertible_v<decltype(std::declval<R&>().nextSource(std::declval<const std::vector<size_t>&>())), size_t> &&
-      std::is_void_v<decltype(std::declval<R&>().cover(std::declval<const C&>()))> &&
+      std::is_void_v<decltype(std::declval<R&>().cover(std::declval<C&>()))> &&
       std::is_convertible_v<decltype(std::declval<R&>().coverage()), double> &&
       std::is_convertible_v<decltype(std::declval<R&>().resolution()), double> &&
       std::is_same_v<decltype(std::declval<R&>().overlaps(std::declval<const Selection<C>&>())),

@@ -28,6 +28,7 @@ MeshRealization::Candidate MeshRealization::separator(size_t source) {
   candidate.score = result.score;
   candidate.centroidInside = result.centroidInside;
   candidate.points = std::move(result.loopPoints);
+  candidate.reach = sampler.reach(source, candidate.points);
   return candidate;
 }
 

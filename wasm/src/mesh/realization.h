@@ -11,16 +11,22 @@ namespace cscd {
 // CSCD-M: the representation-specific steps of the pipeline on a triangle mesh.
 class MeshRealization {
 public:
-  // A separator on the mesh: the loop also as points on the surface, where regions and coverage grow from.
+  // A separator on the mesh: the loop also as points on the surface, where regions and coverage grow
+  // from, and what it covers (SourceSampler::reach: computed with the separator, so that a pool
+  // computes it in parallel; released once covered).
   struct Candidate : cscd::Candidate {
     std::vector<geometrycentral::surface::SurfacePoint> points;
+    std::vector<double> reach;
   };
 
   MeshRealization(Surface& surface, const Options& options);
 
   Candidate separator(size_t source);
   size_t nextSource(const std::vector<size_t>& round) { return sampler.next(round); }
-  void cover(const Candidate& candidate) { sampler.cover(candidate.source, candidate.points); }
+  void cover(Candidate& candidate) {
+    sampler.cover(candidate.reach);
+    candidate.reach = {};
+  }
   double coverage() const;
   double resolution() const { return surface.facts().meanEdgeLength; }
   std::vector<std::vector<size_t>> overlaps(const Selection<Candidate>& kept) const;

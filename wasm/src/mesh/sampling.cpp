@@ -21,9 +21,10 @@ size_t SourceSampler::next(const std::vector<size_t>& round) {
     roundSeen = 0;
   } else {
     if (roundSeen == 0) nearRound = distance;
+    const auto& position = surface.geometry().vertexPositions;
     for (; roundSeen < round.size(); roundSeen++) {
-      std::vector<double> d = surface.geodesics().fromVertex(round[roundSeen]);
-      for (size_t v = 0; v < d.size(); v++) nearRound[v] = std::min(nearRound[v], d[v]);
+      const Vector3 p = position[round[roundSeen]];
+      for (size_t v = 0; v < area.size(); v++) nearRound[v] = std::min(nearRound[v], norm(position[v] - p));
     }
   }
   const std::vector<double>& away = round.empty() ? distance : nearRound;
@@ -43,11 +44,14 @@ size_t SourceSampler::next(const std::vector<size_t>& round) {
   return std::min(v, area.size() - 1);
 }
 
-void SourceSampler::cover(size_t source, const std::vector<SurfacePoint>& loop) {
+std::vector<double> SourceSampler::reach(size_t source, const std::vector<SurfacePoint>& loop) const {
   std::vector<SurfacePoint> covered = loop;
   covered.emplace_back(surface.mesh().vertex(source));
-  std::vector<double> d = surface.geodesics().fromPoints(covered);
-  for (size_t v = 0; v < d.size(); v++) distance[v] = std::min(distance[v], d[v]);
+  return surface.geodesics().fromPoints(covered);
+}
+
+void SourceSampler::cover(const std::vector<double>& reach) {
+  for (size_t v = 0; v < reach.size(); v++) distance[v] = std::min(distance[v], reach[v]);
 }
 
 double SourceSampler::coverage(double radius) const {

@@ -17,7 +17,8 @@ namespace cscd {
 //
 // Sources are drawn in rounds whose separators are computed together (Pipeline): a draw also keeps
 // away from the round's earlier sources, whose loops are not known yet (d_i is then the distance to
-// the covered set or to those sources, whichever is nearer), while coverage counts only what is covered.
+// the covered set or the straight distance to those sources, whichever is nearer: no solve, so the
+// draws of a round cost next to nothing), while coverage counts only what is covered.
 class SourceSampler {
 public:
   SourceSampler(Surface& surface, uint32_t seed);
@@ -25,8 +26,12 @@ public:
   // The next source of a round whose earlier sources are `round` (empty: the round's first draw).
   size_t next(const std::vector<size_t>& round);
 
-  // Marks a source and its separator's loop (empty if it had none) as covered.
-  void cover(size_t source, const std::vector<geometrycentral::surface::SurfacePoint>& loop);
+  // What a source and its separator's loop (empty if it had none) cover: the geodesic distance from
+  // them, per vertex. A function of the surface alone, so a pool worker computes it with the separator.
+  std::vector<double> reach(size_t source, const std::vector<geometrycentral::surface::SurfacePoint>& loop) const;
+
+  // Marks what `reach` measures as covered.
+  void cover(const std::vector<double>& reach);
 
   // Share of the surface area within `radius` of what is covered.
   double coverage(double radius) const;

@@ -1,12 +1,19 @@
 import { writeFile } from 'node:fs/promises';
 import path from 'node:path';
-import type { Skeleton } from '../../lib/core/types.ts';
+import { defaultWorkers, openNodePool } from '../../lib/core/node-pool.ts';
+import { runStage1 } from '../../lib/core/pool.ts';
+import type { PipelineProgress, Skeleton } from '../../lib/core/types.ts';
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
 import { UsageError, decimateIfAsked, decimateOption, openSolver, readMesh, type Command, type OptionValues, type Output } from '../command.ts';
 import { optionFlagSpecs, optionsFromFlags } from './separator.ts';
 
-/** Sources per pipeline step: small enough for a lively progress line, the step cost is one JS/WASM call. */
-const SOURCES_PER_STEP = 1;
+/** --workers K: a whole number from 1 up; more threads than a round has sources would idle. */
+function workersFrom(values: OptionValues, roundSize: number): number {
+  if (values.workers === undefined) return Math.min(defaultWorkers(), roundSize);
+  const k = Number(values.workers);
+  if (!(Number.isInteger(k) && k >= 1 && k <= 256)) throw new UsageError(`--workers must be a whole number from 1 to 256, got '${String(values.workers)}'`);
+  return Math.min(k, roundSize);
+}
 /** At most this often (ms) is the progress line redrawn. */
 const PROGRESS_INTERVAL = 100;
 
@@ -53,6 +60,11 @@ export const skeleton: Command = {
     format: { type: 'string', value: SKELETON_FORMATS.join('|'), description: 'output format (default: from the --out extension, else json)' },
     out: { type: 'string', value: 'FILE', description: 'write the skeleton to FILE instead of stdout' },
     verbose: { type: 'boolean', short: 'v', description: 'print the summary line on stderr even when it is not a terminal' },
+    workers: {
+      type: 'string',
+      value: 'K',
+      description: `threads for stage 1, this one included (default: every core but one, here ${defaultWorkers()}); they share each round of --round-size sources, so with --round-size 1 they have nothing to share; the skeleton does not depend on K`,
+    },
   },
   details: [
     'Draws N sources with the seed (--n auto: until new separators stop adding coverage), finds a local',
@@ -68,23 +80,33 @@ export const skeleton: Command = {
     const progress = new ProgressLine(io.stderr);
     const name = path.basename(file);
 
+    const workers = workersFrom(values, options.roundSize);
     const started = performance.now();
     let result: Skeleton;
+    // The pool's threads open the mesh while this one does.
+    const opening = workers > 1 ? openNodePool(mesh, options, { workers }) : null;
     const surface = await openSolver(mesh, file, io);
+    const pool = await opening?.catch((error) => {
+      surface.dispose();
+      throw error;
+    });
     try {
       const pipeline = surface.pipeline(options);
       try {
-        for (;;) {
-          const step = pipeline.step(SOURCES_PER_STEP);
+        const report = (step: PipelineProgress) => {
           if (tty) progress.update(`cscd: skeleton of ${name}: stage 1, source ${step.done} of ${options.n === 'auto' ? `at most ${step.total}` : step.total}`);
-          if (step.finished) break;
-        }
+        };
+        await runStage1(pipeline, pool?.workers ?? [], {
+          progress: report,
+          lost: (_, error) => io.stderr.write(`cscd: warning: a worker thread failed (${error instanceof Error ? error.message : String(error)}); the others go on\n`),
+        });
         if (tty) progress.update(`cscd: skeleton of ${name}: stage 2`, true);
         result = pipeline.finish();
       } finally {
         pipeline.dispose();
       }
     } finally {
+      await pool?.close();
       surface.dispose();
       progress.clear();
     }

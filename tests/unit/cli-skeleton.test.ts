@@ -158,6 +158,14 @@ describe('cscd skeleton', () => {
 
 // These stop before the core is loaded.
 describe('cscd skeleton usage', () => {
+  it('gives the same JSON on 1 and 2 threads (--workers) for rounds of --round-size sources', async () => {
+    const runs = [];
+    for (const workers of ['1', '2']) runs.push(await cscd('skeleton', twoTorus, '--n', '8', '--round-size', '4', '--workers', workers));
+    expect(runs.map((r) => r.status)).toEqual([0, 0]);
+    expect(withoutTimings(runs[1].stdout)).toBe(withoutTimings(runs[0].stdout));
+    expect((JSON.parse(runs[0].stdout) as SkeletonJson).options.roundSize).toBe(4);
+  }, 120_000);
+
   it('rejects a bad --format, --n or --prune-length-factor with a usage error (exit 2, one cscd: line)', async () => {
     for (const [args, message] of [
       [['--format', 'off'], "--format must be one of json, ply, obj, swc, got 'off'"],
@@ -167,6 +175,7 @@ describe('cscd skeleton usage', () => {
       [['--n', '100001'], "--n must be auto or an integer from 1 to 100000, got '100001'"],
       [['--prune-length-factor', 'x'], "--prune-length-factor must be a number, got 'x'"],
       [['--prune-length-factor=-1'], "--prune-length-factor must be a number from 0 to 1000, got '-1'"],
+      [['--workers', '0'], "--workers must be a whole number from 1 to 256, got '0'"],
     ] as [string[], string][]) {
       const result = await cscd('skeleton', twoTorus, ...args);
       expect(result, args.join(' ')).toEqual({ status: 2, stdout: '', stderr: `cscd: ${message}\n` });

@@ -6,32 +6,27 @@ import { UsageError, openSolver, readMesh, type Command, type OptionSpec as CliO
 
 export type Point = [number, number, number];
 
-/** The JSON written by `cscd separator` (and checked by scripts/check-separators.ts). */
-export interface SeparatorJson {
-  source: number;
-  status: Separator['status'];
-  message: string;
+/**
+ * The JSON written by `cscd separator` (and checked by scripts/check-separators.ts): the Separator
+ * record with its arrays as JSON arrays (points as xyz triples), plus the options it was run with.
+ */
+export type SeparatorJson = Omit<
+  Separator,
+  'attempts' | 'distance' | 'cutLocus' | 'boundaryExtremities' | 'target' | 'targetPoint' | 'ends' | 'endPoints' | 'paths' | 'approxLoop' | 'loop' | 'refined'
+> & {
   distance: number[];
   cutLocus: { points: Point[]; edges: [number, number][]; vertices: number[]; root: number; cycleRank: number };
   boundaryExtremities: Point[];
   target: Point | null;
   /** The two boundary points an open separator (closed: false) runs between; null for a loop. */
   ends: [Point, Point] | null;
-  closed: boolean;
   paths: [Point[], Point[]];
   approxLoop: Point[];
   loop: Point[];
-  sphere: { center: Point; radius: number } | null;
-  approxLength: number;
-  length: number;
-  areas: [number, number];
-  score: number;
-  centroidInside: boolean;
-  timings: Record<string, number>;
   options: Options;
   /** How a coarse mesh was refined to compute on (lib/mesh/refine.ts), or null; vertex indices >= the mesh's count are new vertices. */
   refined: Refinement | null;
-}
+};
 
 function flagSpec(spec: OptionSpec): CliOptionSpec {
   if (spec.kind === 'switch') return { type: 'boolean', description: spec.default ? `do not ${spec.help}` : spec.help };

@@ -288,15 +288,26 @@ export interface CoreSettings {
   memoryLimitMB?: number;
 }
 
-/** Instantiates the WASM core from the bytes of build/wasm/cscd.wasm (fetched by the caller). */
-export async function createCore(wasmBinary: ArrayBuffer | Uint8Array, settings: CoreSettings = {}): Promise<Core> {
+/**
+ * Instantiates the WASM core from the bytes of build/wasm/cscd.wasm (fetched by the caller), or from
+ * that file compiled once (a WebAssembly.Module: workers of one pool share the compile).
+ */
+export async function createCore(wasm: ArrayBuffer | Uint8Array | WebAssembly.Module, settings: CoreSettings = {}): Promise<Core> {
   const limit = Math.round(settings.memoryLimitMB ?? CORE_MAXIMUM_MB);
   if (!(limit >= CORE_INITIAL_MB && limit <= CORE_MAXIMUM_MB)) {
     throw new RangeError(`memoryLimitMB must be between ${CORE_INITIAL_MB} and ${CORE_MAXIMUM_MB}, got ${settings.memoryLimitMB}`);
   }
   const pages = (mb: number) => (mb * 1024 * 1024) / PAGE_BYTES;
+  const compiled = wasm instanceof WebAssembly.Module ? wasm : null;
   const moduleSettings: CscdModuleOptions = {
-    wasmBinary,
+    ...(compiled
+      ? {
+          instantiateWasm: (imports, receive) => {
+            void WebAssembly.instantiate(compiled, imports).then((instance) => receive(instance, compiled));
+            return {};
+          },
+        }
+      : { wasmBinary: wasm as ArrayBuffer | Uint8Array }),
     // The module is linked with -sIMPORTED_MEMORY and takes this memory; its maximum is the cap.
     wasmMemory: new WebAssembly.Memory({ initial: pages(CORE_INITIAL_MB), maximum: pages(limit) }),
     // The module has no file system; anything it prints is a library diagnostic, kept off stdout.

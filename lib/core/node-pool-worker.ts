@@ -1,17 +1,23 @@
 // One thread of the Node pool (lib/core/node-pool.ts): opens the mesh and a pipeline, then answers
 // {id, sources} with the sources' candidate records, or with an error of the core's kind.
 import { parentPort, workerData } from 'node:worker_threads';
-import { loadCoreNode } from './node.ts';
+import { createCore } from './index.ts';
 import { CoreError, type CandidateRecord, type MeshArrays, type Options } from './types.ts';
 
-const { mesh, options, memoryLimitMB } = workerData as { mesh: MeshArrays; options: Partial<Options>; memoryLimitMB?: number };
+const { mesh, options, memoryLimitMB, wasm } = workerData as {
+  mesh: MeshArrays;
+  options: Partial<Options>;
+  memoryLimitMB?: number;
+  /** The core as the pool compiled it. */
+  wasm: WebAssembly.Module;
+};
 const port = parentPort!;
 
 const kindOf = (error: unknown) => (error instanceof CoreError ? error.kind : 'internal');
 const messageOf = (error: unknown) => (error instanceof Error ? error.message : String(error));
 
 try {
-  const core = await loadCoreNode({ memoryLimitMB });
+  const core = await createCore(wasm, { memoryLimitMB });
   const pipeline = core.openRefinedSurface(mesh).pipeline(options);
   port.on('message', ({ id, sources }: { id: number; sources: Uint32Array }) => {
     try {

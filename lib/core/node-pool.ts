@@ -3,6 +3,7 @@
 // options, and computes the separators of the sources it is sent (lib/core/pool.ts).
 import os from 'node:os';
 import { Worker } from 'node:worker_threads';
+import { compiledCore } from './node.ts';
 import type { SeparatorWorker } from './pool.ts';
 import { CoreError, type CandidateRecord, type CoreErrorKind, type MeshArrays, type Options } from './types.ts';
 
@@ -56,8 +57,10 @@ export class ThreadWorker implements SeparatorWorker {
 /** `workers - 1` threads beside the caller's, each ready (its surface and pipeline open) when this resolves. */
 export async function openNodePool(mesh: MeshArrays, options: Partial<Options>, settings: PoolSettings): Promise<NodePool> {
   const count = Math.max(0, Math.floor(settings.workers) - 1);
+  // One compile of the core for all threads (each instantiates its own copy of it).
+  const wasm = count > 0 ? await compiledCore() : null;
   const threads = Array.from({ length: count }, () => new Worker(new URL('./node-pool-thread.mjs', import.meta.url), {
-    workerData: { mesh: { positions: mesh.positions, triangles: mesh.triangles }, options, memoryLimitMB: settings.memoryLimitMB },
+    workerData: { mesh: { positions: mesh.positions, triangles: mesh.triangles }, options, memoryLimitMB: settings.memoryLimitMB, wasm },
   }));
   try {
     await Promise.all(threads.map((thread) => new Promise<void>((resolve, reject) => {

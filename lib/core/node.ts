@@ -8,5 +8,13 @@ export * from './index.ts';
 export const wasmPath = new URL('../../build/wasm/cscd.wasm', import.meta.url);
 
 export async function loadCoreNode(settings: CoreSettings = {}): Promise<Core> {
-  return createCore(await readFile(wasmPath), settings);
+  return createCore(await compiledCore(), settings);
+}
+
+let compiled: Promise<WebAssembly.Module> | null = null;
+
+/** build/wasm/cscd.wasm compiled once per thread; a pool hands it to its threads (it can be posted). */
+export function compiledCore(): Promise<WebAssembly.Module> {
+  compiled ??= readFile(wasmPath).then((bytes) => WebAssembly.compile(bytes));
+  return compiled;
 }

@@ -46,6 +46,8 @@ export interface CscdModuleOptions {
   /** The module's memory (it is linked with -sIMPORTED_MEMORY): its maximum caps the heap. */
   wasmMemory?: WebAssembly.Memory;
   locateFile?: (path: string, prefix: string) => string;
+  /** Instantiates the module from the caller's own compiled WebAssembly.Module (e.g. one shared by workers). */
+  instantiateWasm?: (imports: WebAssembly.Imports, receive: (instance: WebAssembly.Instance, module: WebAssembly.Module) => void) => object;
   print?: (text: string) => void;
   printErr?: (text: string) => void;
   onAbort?: (what: unknown) => void;

@@ -2,20 +2,31 @@
 // calls as `cscd skeleton` (cli/commands/skeleton.ts), in a process of its own so that it is timed and
 // pinned like the baselines.
 //
-//   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json>
+//   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --round-size R]
 //
-// Writes the skeleton as our JSON and prints, as the last line of stdout, {"seconds": S}: the wall time
-// of openRefinedSurface (refining a coarse mesh, as the CLI does, and the per-mesh geodesic solver) and
-// skeleton, i.e. from the parsed mesh to the skeleton (reading the file, loading the WASM and writing excluded).
+// Writes the skeleton as our JSON and prints, as the last line of stdout, {"seconds": S, "stage1Seconds": T}:
+// the wall time of openRefinedSurface (refining a coarse mesh, as the CLI does, and the per-mesh geodesic
+// solver) and skeleton, i.e. from the parsed mesh to the skeleton (reading the file, loading the WASM and
+// writing excluded), and of stage 1 alone. With --workers K > 1 stage 1 runs on a pool of K threads
+// (bench/parallel.ts), whose opening is part of S.
 import { readFile, writeFile } from 'node:fs/promises';
+import { parseArgs } from 'node:util';
 import { loadCoreNode } from '../../lib/core/node.ts';
+import { openNodePool } from '../../lib/core/node-pool.ts';
 import { defaultOptions } from '../../lib/core/options.ts';
+import { runStage1 } from '../../lib/core/pool.ts';
 import { parseMesh } from '../../lib/io/index.ts';
 import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
 
-const [meshPath, outPath] = process.argv.slice(2);
-if (!meshPath || !outPath) {
-  process.stderr.write('usage: node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json>\n');
+const { positionals, values } = parseArgs({
+  allowPositionals: true,
+  options: { workers: { type: 'string', default: '1' }, 'round-size': { type: 'string', default: String(defaultOptions.roundSize) } },
+});
+const [meshPath, outPath] = positionals;
+const workers = Number(values.workers);
+const options = { ...defaultOptions, roundSize: Number(values['round-size']) };
+if (!meshPath || !outPath || !(workers >= 1) || !(options.roundSize >= 1)) {
+  process.stderr.write('usage: node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --round-size R]\n');
   process.exit(2);
 }
 
@@ -23,14 +34,26 @@ const mesh = parseMesh(await readFile(meshPath), meshPath);
 const core = await loadCoreNode();
 
 const started = performance.now();
+const pool = workers > 1 ? openNodePool(mesh, options, { workers }) : null;
 const surface = core.openRefinedSurface(mesh);
 let skeleton;
+let stage1Seconds = 0;
 try {
-  skeleton = surface.skeleton({});
+  const threads = (await pool)?.workers ?? [];
+  const pipeline = surface.pipeline(options);
+  try {
+    const stage1 = performance.now();
+    await runStage1(pipeline, threads);
+    stage1Seconds = (performance.now() - stage1) / 1000;
+    skeleton = pipeline.finish();
+  } finally {
+    pipeline.dispose();
+  }
 } finally {
   surface.dispose();
+  await (await pool)?.close();
 }
 const seconds = (performance.now() - started) / 1000;
 
-await writeFile(outPath, writeSkeletonJson(skeleton, { mesh: meshPath, options: { ...defaultOptions } }));
-process.stdout.write(`${JSON.stringify({ seconds })}\n`);
+await writeFile(outPath, writeSkeletonJson(skeleton, { mesh: meshPath, options }));
+process.stdout.write(`${JSON.stringify({ seconds, stage1Seconds })}\n`);

@@ -34,12 +34,14 @@ const mesh = parseMesh(await readFile(meshPath), meshPath);
 const core = await loadCoreNode();
 
 const started = performance.now();
-const pool = workers > 1 ? openNodePool(mesh, options, { workers }) : null;
+// The pool's threads open the mesh while this one does (a failure of either ends the process).
+const opening = workers > 1 ? openNodePool(mesh, options, { workers }) : null;
 const surface = core.openRefinedSurface(mesh);
+const pool = await opening;
 let skeleton;
 let stage1Seconds = 0;
 try {
-  const threads = (await pool)?.workers ?? [];
+  const threads = pool?.workers ?? [];
   const pipeline = surface.pipeline(options);
   try {
     const stage1 = performance.now();
@@ -51,7 +53,7 @@ try {
   }
 } finally {
   surface.dispose();
-  await (await pool)?.close();
+  await pool?.close();
 }
 const seconds = (performance.now() - started) / 1000;
 

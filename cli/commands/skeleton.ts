@@ -85,7 +85,10 @@ export const skeleton: Command = {
     let result: Skeleton;
     // The pool's threads open the mesh while this one does.
     const opening = workers > 1 ? openNodePool(mesh, options, { workers }) : null;
-    const surface = await openSolver(mesh, file, io);
+    const surface = await openSolver(mesh, file, io).catch(async (error) => {
+      await opening?.then((pool) => pool.close(), () => undefined);
+      throw error;
+    });
     const pool = await opening?.catch((error) => {
       surface.dispose();
       throw error;

@@ -26,11 +26,18 @@ export interface Stage1Hooks {
   lost?: (worker: SeparatorWorker, error: unknown) => void;
 }
 
-/** Stage 1 of `pipeline` with `workers` beside it (none: all here, as `step`); then `finish` gives the skeleton. */
+/** Stage 1 of `pipeline` with `workers` beside it (none: all here, by `step`); then `finish` gives the skeleton. */
 export async function runStage1(pipeline: Pipeline, workers: readonly SeparatorWorker[], hooks: Stage1Hooks = {}): Promise<PipelineProgress> {
   const alive = new Set(workers);
   for (;;) {
     hooks.check?.();
+    if (alive.size === 0) {
+      // Alone: the round in place, its candidates never copied out of the core and back.
+      const progress = pipeline.step(1);
+      hooks.progress?.(progress);
+      if (progress.finished) return progress;
+      continue;
+    }
     const round = pipeline.drawRound();
     if (round.length === 0) return pipeline.accept([]);
     const records: CandidateRecord[] = new Array(round.length);
@@ -49,8 +56,7 @@ export async function runStage1(pipeline: Pipeline, workers: readonly SeparatorW
     const remote = [...alive].flatMap((worker) => Array.from({ length: IN_FLIGHT }, () => lane(worker)));
     for (let i = queue.shift(); i !== undefined; i = queue.shift()) {
       records[i] = pipeline.separators(round.slice(i, i + 1))[0];
-      // Workers' replies come in between sources; alone, nothing needs the pause (~1 ms each).
-      if (alive.size > 0) await yieldToEvents();
+      await yieldToEvents();
       hooks.check?.();
     }
     await Promise.all(remote);

@@ -5,7 +5,7 @@ import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { defaultOptions } from '../../lib/core/options.ts';
 import { parseSkeleton, spanningForest, type SkeletonJson } from '../../lib/io/skeleton.ts';
-import { sharedMesh } from '../paths.ts';
+import { fixture, sharedMesh } from '../paths.ts';
 import { decimate } from '../../lib/mesh/decimate.ts';
 import { icosphere, offText, readMesh } from './support/meshes.ts';
 import { cscd } from './support/cli.ts';
@@ -164,6 +164,11 @@ describe('cscd skeleton usage', () => {
     expect(runs.map((r) => r.status)).toEqual([0, 0]);
     expect(withoutTimings(runs[1].stdout)).toBe(withoutTimings(runs[0].stdout));
     expect((JSON.parse(runs[0].stdout) as SkeletonJson).options.roundSize).toBe(4);
+  }, 120_000);
+
+  it('reports a mesh the core refuses once, with its threads closed, when --workers starts a pool', async () => {
+    const result = await cscd('skeleton', fixture('bad', 'moebius.obj'), '--n', '8', '--round-size', '4', '--workers', '2');
+    expect(result).toEqual({ status: 1, stdout: '', stderr: expect.stringMatching(/^cscd: the mesh is not a manifold surface: faces are not consistently oriented[^\n]*\n$/) });
   }, 120_000);
 
   it('rejects a bad --format, --n or --prune-length-factor with a usage error (exit 2, one cscd: line)', async () => {

@@ -126,6 +126,7 @@ public:
   // accept) and the skeleton stays the same; step() computes them here.
   std::vector<size_t> drawRound() {
     if (!round.empty() || done) return round;
+    if (drawn.empty()) stage1Start = std::chrono::steady_clock::now();
     const size_t size = std::min<size_t>(options.roundSize, total() - drawn.size());
     for (size_t k = 0; k < size; k++) round.push_back(realization.nextSource(round));
     return round;
@@ -143,19 +144,18 @@ public:
       done = options.n > 0 ? drawn.size() >= size_t(options.n) : autoSaturated();
     }
     round.clear();
+    if (done) stage1Ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stage1Start).count();
     return progress();
   }
 
   // Stage 1 here, whole rounds until at least `count` more sources are done (or stage 1 is).
   Progress step(size_t count) {
-    auto start = std::chrono::steady_clock::now();
     const size_t target = drawn.size() + count;
     while (!done && drawn.size() < target) {
       std::vector<Candidate> candidates;
       for (size_t source : drawRound()) candidates.push_back(realization.separator(source));
       accept(std::move(candidates));
     }
-    stage1Ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return progress();
   }
 
@@ -234,7 +234,8 @@ private:
   std::vector<Candidate> drawn;
   std::vector<size_t> round; // sources drawn, candidates not yet accepted
   std::vector<double> coverageHistory;
-  double stage1Ms = 0;
+  std::chrono::steady_clock::time_point stage1Start; // the first draw
+  double stage1Ms = 0;                               // from the first draw to the last candidate taken, wherever computed
   bool done = false;
 };
 

@@ -159,7 +159,7 @@ export interface Skeleton {
   radii: Float64Array;
   /** Pairs of node indices. */
   edges: Uint32Array;
-  /** Skeleton node of every input vertex (the band piece of a region it lies in; branch nodes own no vertices). */
+  /** Skeleton node of every input vertex: the nearest node along the skeleton from its band piece; each node's vertices are connected. */
   vertexToNode: Uint32Array;
   /** Every candidate of stage 1: its source, loop, score and fate. */
   candidates: {

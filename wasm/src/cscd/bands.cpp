@@ -21,6 +21,8 @@ constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 constexpr double kBranchReach = 2.0;
 // A leaf's node moves to its tip only when that is worth a tenth of its radius.
 constexpr double kTipMove = 0.1;
+// A leaf piece that lies within this many radii of its neighbour's node is the neighbour's end cap.
+constexpr double kCapReach = 1.5;
 // A loop is 2 pi band widths long (kBandWidth = 1): a region with less area than that many band widths
 // times the element spacing does not hold a strip of elements along its loop.
 constexpr double kIslandStrip = M_PI;
@@ -385,7 +387,9 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   // along its separator (the watershed gave its separator's elements to a neighbour); a leaf piece that
   // lies outside the shape (a few elements at the very end of a thin tip: its neighbour moves into the
   // tip instead) or touches a piece other than its one neighbour (across a region border or a cut
-  // cycle); a leaf branch of band pieces that spans less than one band (no cross-section of its own) or
+  // cycle); a leaf piece within kCapReach of its neighbour's radius from its node (the end cap of the
+  // neighbour's cross-section: on a blunt end whose separator is tilted, the last band is a crescent on
+  // one side, and as a leaf it bent the skeleton sideways there); a leaf branch of band pieces that spans less than one band (no cross-section of its own) or
   // does not reach more than its junction's radius beyond the junction's surface (a bump).
   auto touchesOther = [&](uint32_t node, uint32_t neighbour) {
     for (uint32_t p : piecesOf[node])
@@ -409,6 +413,15 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
       if (outside || touchesOther(leaf, next)) {
         changed = absorb(next, leaf) || changed;
         continue;
+      }
+      if (!isHub(next)) {
+        double reach = 0;
+        for (uint32_t p : piecesOf[leaf])
+          for (uint32_t v : pieces.list[p].elements) reach = std::max(reach, norm(samples.positions[v] - position[next]));
+        if (reach < kCapReach * radius[next]) {
+          changed = absorb(next, leaf) || changed;
+          continue;
+        }
       }
       std::vector<uint32_t> chain{leaf};
       uint32_t previous = leaf, at = next;

@@ -23,6 +23,13 @@ constexpr double kBranchReach = 2.0;
 constexpr double kTipMove = 0.1;
 // A leaf piece that lies within this many radii of its neighbour's node is the neighbour's end cap.
 constexpr double kCapReach = 1.5;
+// A node is centred on its elements when it has this many (fewer say little about a sphere), by this
+// many fixed-point iterations, in this many rounds with the vertex map; a branch node moves at most
+// this share of its fitted radius.
+constexpr size_t kFitElements = 8;
+constexpr int kFitIterations = 50;
+constexpr int kFitRounds = 2;
+constexpr double kBranchNodeFit = 0.5;
 // A loop is 2 pi band widths long (kBandWidth = 1): a region with less area than that many band widths
 // times the element spacing does not hold a strip of elements along its loop.
 constexpr double kIslandStrip = M_PI;
@@ -177,6 +184,70 @@ void compactVertexMap(std::vector<uint32_t>& nodeOfElement, const SkeletonGraph&
   // An element with no neighbour at all (an isolated point) keeps its nearest node.
   for (size_t k = 0; k < orphans.size(); k++)
     if (nodeOfElement[orphans[k]] == kNone) nodeOfElement[orphans[k]] = moved[k];
+}
+
+// Each node of a solid part moves to the centre of the sphere that best fits its elements (least
+// squares of their distances to it: Landau's fixed-point iteration, from where the node is). A band
+// piece's slice centroid lies off the axis wherever the piece is not a round cross-section (a bend, a
+// taper, a blob, a junction), and a node off the axis is a tube that sticks out on one side and falls
+// short on the other; centred, the tube around a node is as round as its elements allow. On a ring
+// of elements the iteration does not move along the axis, so nodes keep their spacing along a tube,
+// and a leaf moves across its edge only, keeping its reach into its tip. A branch node's elements are
+// the first stretch of each of its branches, seldom alike, so it moves at most half its fitted radius
+// (farther, it left the junction for one branch: on star8_coarse a stub beside an arm then grew
+// longer than the arm's radius). A move that leaves the shape, or goes farther than the fitted
+// radius, is not made. New positions are taken all at once, so node order does not matter.
+void centreOnElements(SkeletonGraph& graph, const std::vector<uint32_t>& nodeOfElement, const Samples& samples,
+                      const std::function<bool(uint32_t)>& solidElement,
+                      const std::function<bool(const Vector3&)>& inside) {
+  const size_t nodeCount = graph.nodes.size();
+  std::vector<std::vector<uint32_t>> owned(nodeCount);
+  std::vector<char> solidNode(nodeCount, 1);
+  for (uint32_t v = 0; v < nodeOfElement.size(); v++) {
+    owned[nodeOfElement[v]].push_back(v);
+    if (!solidElement(v)) solidNode[nodeOfElement[v]] = 0;
+  }
+  std::vector<int> degree(nodeCount, 0);
+  std::vector<uint32_t> neighbour(nodeCount, 0);
+  for (const auto& [a, b] : graph.edges) {
+    degree[a]++, degree[b]++;
+    neighbour[a] = b, neighbour[b] = a;
+  }
+  std::vector<Vector3> centred = graph.nodes;
+  for (size_t node = 0; node < nodeCount; node++) {
+    if (!solidNode[node] || owned[node].size() < kFitElements) continue;
+    const Vector3 at = graph.nodes[node];
+    Vector3 mean{0, 0, 0};
+    double total = 0;
+    for (uint32_t v : owned[node]) {
+      mean += samples.weights[v] * samples.positions[v];
+      total += samples.weights[v];
+    }
+    if (!(total > 0)) continue;
+    mean /= total;
+    Vector3 centre = at;
+    double fitted = 0;
+    for (int k = 0; k < kFitIterations; k++) {
+      Vector3 away{0, 0, 0};
+      fitted = 0;
+      for (uint32_t v : owned[node]) {
+        const Vector3 d = centre - samples.positions[v];
+        const double length = norm(d);
+        fitted += samples.weights[v] * length;
+        if (length > 0) away += samples.weights[v] * d / length;
+      }
+      fitted /= total;
+      centre = mean + fitted * away / total;
+    }
+    const Vector3 edge = at - graph.nodes[neighbour[node]];
+    if (degree[node] == 1 && norm(edge) > 0) {
+      const Vector3 axis = edge / norm(edge);
+      centre -= dot(centre - at, axis) * axis;
+    }
+    const double reach = (degree[node] > 2 ? kBranchNodeFit : 1.0) * fitted;
+    if (norm(centre - at) <= reach && inside(centre)) centred[node] = centre;
+  }
+  graph.nodes = std::move(centred);
 }
 
 } // namespace
@@ -495,6 +566,12 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   std::vector<uint32_t> nodeOfElement(count);
   for (size_t v = 0; v < count; v++) nodeOfElement[v] = index[resolve(nodeOf[pieces.of[v]])];
   compactVertexMap(nodeOfElement, graph, samples);
+  // Centred nodes own other elements than before, whose sphere is centred again: twice (a third and
+  // fourth round drifted, and lost as many meshes as they won).
+  for (int round = 0; round < kFitRounds; round++) {
+    centreOnElements(graph, nodeOfElement, samples, [&](uint32_t v) { return bool(solid[label[v]]); }, inside);
+    compactVertexMap(nodeOfElement, graph, samples);
+  }
   graph.weights.assign(graph.nodes.size(), 0);
   for (size_t v = 0; v < count; v++) graph.weights[nodeOfElement[v]] += samples.weights[v];
   graph.radii.clear();

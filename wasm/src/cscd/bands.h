@@ -26,7 +26,10 @@ struct Samples {
 // centroid of the middle slice of its band (the slice has unit distance gradient across it, so this is
 // the centroid of the level curve: no pull to the outer side of a bend). A leaf branch that does not
 // reach more than its junction's radius beyond the surface it sticks out of is a bump, not a branch,
-// and is merged into the junction; a leaf's node moves to the centre of its tip's end sphere.
+// and is merged into the junction; a leaf's node moves to the centre of its tip's end sphere. Last,
+// each element goes to its nearest node along the skeleton (the vertex map) and each node of a solid
+// part moves to the centre of the sphere that best fits its elements (a leaf across its edge only),
+// twice, so that nodes lie on the medial axis where slices are no round cross-sections.
 //
 // The graph comes in with region nodes 0..regions.count-1 (positioned by the realization) followed by
 // branch nodes; these keep their indices, the band nodes are appended. In a `solid` region (one whose

@@ -1,0 +1,56 @@
+// The skeleton rebuilds its shape: the paper's reconstruction error with radii fitted to the surface
+// (nodes centred on their elements) and with radii read from the vertex map (each node's vertices a
+// compact cross-section around it, the bench's second rule), on the synthetic shapes of
+// ../shared/data/synthetic. Bounds sit between the errors measured before and after those two changes
+// (star8_coarse: 0.078 -> 0.014 fitted, 0.315 -> 0.041 from the map; tree_coarse: 0.0059 -> 0.0026
+// and 0.0148 -> 0.0049; docs/skeleton.md).
+import { beforeAll, describe, expect, it } from 'vitest';
+import { vertexMapRadii } from '../../bench/metrics.ts';
+import { loadCoreNode, type Core, type MeshArrays, type Skeleton } from '../../lib/core/node.ts';
+import { graphTopology } from '../../lib/graph/topology.ts';
+import { readMesh } from './support/meshes.ts';
+import { sharedSynthetic } from '../paths.ts';
+
+let core: Core;
+beforeAll(async () => {
+  core = await loadCoreNode();
+});
+
+describe.each([
+  { shape: 'star8_coarse', fittedBound: 0.03, mapBound: 0.1 },
+  { shape: 'tree_coarse', fittedBound: 0.0032, mapBound: 0.008 },
+])('the skeleton of $shape', ({ shape, fittedBound, mapBound }) => {
+  let mesh: MeshArrays;
+  let skeleton: Skeleton;
+  beforeAll(() => {
+    mesh = readMesh(sharedSynthetic(`${shape}.ply`));
+    const surface = core.openRefinedSurface(mesh);
+    try {
+      skeleton = surface.skeleton({});
+    } finally {
+      surface.dispose();
+    }
+  });
+
+  it('rebuilds the shape with radii fitted to the surface (nodes centred on their elements)', () => {
+    expect(core.evaluate(mesh, { nodes: skeleton.nodes, edges: skeleton.edges, radii: null }).reconError).toBeLessThan(fittedBound);
+  });
+
+  it('rebuilds the shape with radii from the vertex map (each node\'s vertices around it)', () => {
+    const graph = { nodes: skeleton.nodes, edges: skeleton.edges };
+    // Nodes that own no vertex take their neighbours' radii; those of components that own none (none here) the fitted ones.
+    const fitted = core.evaluate(mesh, { ...graph, radii: null }).radii;
+    const { radii } = vertexMapRadii(mesh.positions, graph, skeleton.vertexToNode, fitted);
+    expect(core.evaluate(mesh, { ...graph, radii }).reconError).toBeLessThan(mapBound);
+  });
+
+  it('gives every node a connected piece of the surface', () => {
+    const vertexCount = mesh.positions.length / 3;
+    const sameNode: number[] = [];
+    for (let c = 0; c < mesh.triangles.length; c++) {
+      const a = mesh.triangles[c], b = mesh.triangles[c % 3 === 2 ? c - 2 : c + 1];
+      if (skeleton.vertexToNode[a] === skeleton.vertexToNode[b]) sameNode.push(a, b);
+    }
+    expect(graphTopology(vertexCount, sameNode).components).toBe(new Set(skeleton.vertexToNode).size);
+  });
+});

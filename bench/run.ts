@@ -458,13 +458,24 @@ function csv(rows: Row[]): string {
   return `${lines.join('\n')}\n`;
 }
 
-/** bench/results/<date>[-quick], then -2, -3... until no file of the run's three exists. */
+/**
+ * bench/results/<date>[-quick], then -2, -3... until no file of the run's three exists; the name is
+ * claimed at once by creating its .md (exclusively), so that two runs started together (one per core)
+ * do not write to the same files.
+ */
 function runName(quick: boolean): string {
   const base = `${new Date().toISOString().slice(0, 10)}${quick ? '-quick' : ''}`;
   const taken = (name: string) => ['md', 'csv', 'svg'].some((ext) => existsSync(path.join(resultsDir, `${name}.${ext}`)));
-  let name = base;
-  for (let k = 2; taken(name); k++) name = `${base}-${k}`;
-  return name;
+  for (let k = 1; ; k++) {
+    const name = k === 1 ? base : `${base}-${k}`;
+    if (taken(name)) continue;
+    try {
+      writeFileSync(path.join(resultsDir, `${name}.md`), '', { flag: 'wx' });
+      return name;
+    } catch (error) {
+      if ((error as NodeJS.ErrnoException).code !== 'EEXIST') throw error;
+    }
+  }
 }
 
 function shell(command: string, args: string[]): string {

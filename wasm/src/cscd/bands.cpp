@@ -109,10 +109,9 @@ Slice slice(const Piece& piece, const Samples& samples, const std::vector<double
 // junctions and region borders, so some elements of a piece lie nearer the next node along the
 // skeleton than their own. Nearest-node cells are slabs across the tube, the cross-sections a user
 // reads from the vertex map (segmentation, skinning), and a node's own elements then lie about one
-// radius from it (the vertex-map radius rule of the bench: geometric mean against MSLS 1.08 -> 0.90
-// over the 30 shared meshes). Moves only go along graph edges, so an element never leaves its part of
-// the shape; a node that the moves split keeps its largest piece, and the elements of its other
-// pieces flow to the nearest node beside them, so every node's elements stay connected.
+// radius from it. Moves only go along graph edges, so an element never leaves its part of the shape;
+// a node that the moves split keeps its largest piece, and the elements of its other pieces flow to
+// the nearest node beside them, so every node's elements stay connected.
 void compactVertexMap(std::vector<uint32_t>& nodeOfElement, const SkeletonGraph& graph, const Samples& samples) {
   std::vector<std::vector<uint32_t>> adj(graph.nodes.size());
   for (const auto& [a, b] : graph.edges) {
@@ -459,9 +458,10 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   // lies outside the shape (a few elements at the very end of a thin tip: its neighbour moves into the
   // tip instead) or touches a piece other than its one neighbour (across a region border or a cut
   // cycle); a leaf piece within kCapReach of its neighbour's radius from its node (the end cap of the
-  // neighbour's cross-section: on a blunt end whose separator is tilted, the last band is a crescent on
-  // one side, and as a leaf it bent the skeleton sideways there); a leaf branch of band pieces that spans less than one band (no cross-section of its own) or
-  // does not reach more than its junction's radius beyond the junction's surface (a bump).
+  // neighbour's cross-section: on a blunt end whose separator is tilted, the last band is a crescent
+  // on one side, and as a leaf it bent the skeleton sideways there); a leaf branch of band pieces that
+  // spans less than one band (no cross-section of its own) or does not reach more than its junction's
+  // radius beyond the junction's surface (a bump).
   auto touchesOther = [&](uint32_t node, uint32_t neighbour) {
     for (uint32_t p : piecesOf[node])
       for (const auto& [q, n] : contactsOf[p]) {

@@ -27,7 +27,7 @@ import { Viewer } from './viewer/viewer.ts';
 import { WholeShape } from './whole-shape.ts';
 import { GeometryClient, WorkerError } from './worker/client.ts';
 import type { Refinement } from '../../lib/core/types.ts';
-import type { DecimatedReply, OpenedReply, WriteRequest } from './worker/protocol.ts';
+import type { DecimatedReply, OpenedReply, SkeletonReply, WriteRequest } from './worker/protocol.ts';
 
 const initial = readUrl();
 const panel = new Panel();
@@ -514,6 +514,8 @@ declare global {
       projectNode(index: number): { x: number; y: number } | null;
       /** Camera along `direction` (towards the camera) at a sphere around `center` (default: the mesh). */
       setView(view: { direction?: [number, number, number]; center?: [number, number, number]; radius?: number }): void;
+      /** The worker's times of the skeleton shown and its number of sources (null: none), for bench/page.ts. */
+      skeletonRun(): (SkeletonReply['timings'] & { sources: number }) | null;
     };
   }
 }
@@ -529,6 +531,7 @@ window.cscd = {
     viewer.frame({ direction: v(direction), center: v(center), radius });
     viewer.flush();
   },
+  skeletonRun: () => (whole.result ? { ...whole.result.timings, sources: whole.result.skeleton.stats.n } : null),
 };
 
 // -- start: the linked view, or the default sample --------------------------------------------------

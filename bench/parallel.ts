@@ -28,14 +28,14 @@ const files = (positionals.length ? all.filter((f) => positionals.includes(path.
 const tmp = mkdtempSync(path.join(os.tmpdir(), 'cscd-parallel-'));
 const loadBefore = os.loadavg();
 
-function run(file: string, threads: string): { seconds: number; stage1Seconds: number; json: string } {
+function run(file: string, threads: string): { seconds: number; stage1Seconds: number; memoryMB: number; json: string } {
   const out = path.join(tmp, `${path.basename(file)}-${threads}.json`);
   const result = spawnSync(process.execPath, ['--import', 'tsx', 'bench/runners/cscd.ts', file, out, '--workers', threads, '--round-size', roundSize], {
     cwd: repoRoot,
     encoding: 'utf8',
   });
   if (result.status !== 0) throw new Error(`${path.basename(file)} on ${threads}: ${result.stderr.trim().split('\n').pop()}`);
-  const times = JSON.parse(result.stdout.trim().split('\n').pop()!) as { seconds: number; stage1Seconds: number };
+  const times = JSON.parse(result.stdout.trim().split('\n').pop()!) as { seconds: number; stage1Seconds: number; memoryMB: number };
   return { ...times, json: readFileSync(out, 'utf8').replace(/"timings":\{[^{}]*\}/, '"timings":{}') };
 }
 
@@ -47,7 +47,7 @@ files.forEach(({ file, vertices }, i) => {
   const [one, many] = order[0] === '1' ? [a, b] : [b, a];
   const n = (JSON.parse(one.json) as { stats: { n: number } }).stats.n;
   ratios.push(one.stage1Seconds / many.stage1Seconds);
-  rows.push(`| ${path.basename(file, '.ply')} | ${vertices} | ${n} | ${one.seconds.toFixed(2)} | ${many.seconds.toFixed(2)} | ${one.stage1Seconds.toFixed(2)} | ${many.stage1Seconds.toFixed(2)} | ${(one.stage1Seconds / many.stage1Seconds).toFixed(2)} | ${one.json === many.json ? 'yes' : '**no**'} |`);
+  rows.push(`| ${path.basename(file, '.ply')} | ${vertices} | ${n} | ${one.seconds.toFixed(2)} | ${many.seconds.toFixed(2)} | ${one.stage1Seconds.toFixed(2)} | ${many.stage1Seconds.toFixed(2)} | ${(one.stage1Seconds / many.stage1Seconds).toFixed(2)} | ${Math.round(many.memoryMB)} | ${one.json === many.json ? 'yes' : '**no**'} |`);
   process.stdout.write(`${rows.at(-1)}\n`);
 });
 const geomean = Math.exp(ratios.reduce((s, r) => s + Math.log(r), 0) / ratios.length);
@@ -58,10 +58,10 @@ const table = [
   '',
   `Machine: ${os.cpus().length} × ${cpu}, Node ${process.version}; load average (1, 5, 15 min) before the run ${loadBefore.map((l) => l.toFixed(2)).join(' ')}, after it ${os.loadavg().map((l) => l.toFixed(2)).join(' ')}.`,
   `Command: \`node --import tsx bench/parallel.ts --round-size ${roundSize} --workers ${workers} --min-vertices ${minVertices}\`; default options otherwise (n auto).`,
-  'Seconds: from the parsed mesh to the skeleton (the pool\'s opening included); stage 1: the rounds alone. Same: the skeleton JSON, timings aside.',
+  'Seconds: from the parsed mesh to the skeleton (the pool\'s opening included); stage 1: the rounds alone. MB per core: the peak memory of the calling thread\'s core in the pool run, which bounds each pool thread\'s (they hold the same mesh and solver and do less). Same: the skeleton JSON, timings aside.',
   '',
-  `| mesh | vertices | N | seconds, 1 | seconds, ${workers} | stage 1, 1 | stage 1, ${workers} | stage-1 speedup | same |`,
-  '|---|---|---|---|---|---|---|---|---|',
+  `| mesh | vertices | N | seconds, 1 | seconds, ${workers} | stage 1, 1 | stage 1, ${workers} | stage-1 speedup | MB per core | same |`,
+  '|---|---|---|---|---|---|---|---|---|---|',
   ...rows,
   '',
   `Geometric mean of the stage-1 speedup: ${geomean.toFixed(2)} over ${ratios.length} meshes.`,

@@ -4,7 +4,9 @@
 //
 //   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --round-size R]
 //
-// Writes the skeleton as our JSON and prints, as the last line of stdout, {"seconds": S, "stage1Seconds": T}:
+// Writes the skeleton as our JSON and prints, as the last line of stdout, {"seconds": S, "stage1Seconds": T,
+// "memoryMB": M} (M: this thread's core at the end, its peak; it ran stage 1 beside the pool's threads and
+// stage 2, so no pool thread's core needs more):
 // the wall time of openRefinedSurface (refining a coarse mesh, as the CLI does, and the per-mesh geodesic
 // solver) and skeleton, i.e. from the parsed mesh to the skeleton (reading the file, loading the WASM and
 // writing excluded), and of stage 1 alone. With --workers K > 1 stage 1 runs on a pool of K threads
@@ -58,4 +60,4 @@ try {
 const seconds = (performance.now() - started) / 1000;
 
 await writeFile(outPath, writeSkeletonJson(skeleton, { mesh: meshPath, options }));
-process.stdout.write(`${JSON.stringify({ seconds, stage1Seconds })}\n`);
+process.stdout.write(`${JSON.stringify({ seconds, stage1Seconds, memoryMB: core.memoryMB() })}\n`);

@@ -246,7 +246,12 @@ class WasmCore implements Core {
   constructor(
     private readonly module: CscdModule,
     private readonly unwrap: Unwrap,
+    private readonly memory: WebAssembly.Memory,
   ) {}
+
+  memoryMB(): number {
+    return this.memory.buffer.byteLength / (1024 * 1024);
+  }
 
   inspect(mesh: MeshArrays): MeshFacts {
     return this.unwrap(this.module.inspect(mesh.positions, mesh.triangles)) as MeshFacts;
@@ -299,6 +304,7 @@ export async function createCore(wasm: ArrayBuffer | Uint8Array | WebAssembly.Mo
   }
   const pages = (mb: number) => (mb * 1024 * 1024) / PAGE_BYTES;
   const compiled = wasm instanceof WebAssembly.Module ? wasm : null;
+  const memory = new WebAssembly.Memory({ initial: pages(CORE_INITIAL_MB), maximum: pages(limit) });
   const moduleSettings: CscdModuleOptions = {
     ...(compiled
       ? {
@@ -309,11 +315,11 @@ export async function createCore(wasm: ArrayBuffer | Uint8Array | WebAssembly.Mo
         }
       : { wasmBinary: wasm as ArrayBuffer | Uint8Array }),
     // The module is linked with -sIMPORTED_MEMORY and takes this memory; its maximum is the cap.
-    wasmMemory: new WebAssembly.Memory({ initial: pages(CORE_INITIAL_MB), maximum: pages(limit) }),
+    wasmMemory: memory,
     // The module has no file system; anything it prints is a library diagnostic, kept off stdout.
     print: (text) => console.warn(`[cscd core] ${text}`),
     printErr: (text) => console.warn(`[cscd core] ${text}`),
   };
   const module = await createCscdModule(moduleSettings);
-  return new WasmCore(module, unwrapper(limit));
+  return new WasmCore(module, unwrapper(limit), memory);
 }

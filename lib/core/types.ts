@@ -316,6 +316,11 @@ export interface Core {
   openRefinedSurface(mesh: MeshArrays): RefinedSurface;
   /** The reconstruction error of a skeleton against a mesh (the mesh need not be manifold). */
   evaluate(mesh: MeshArrays, skeleton: SkeletonInput): Evaluation;
+  /**
+   * The core's memory in MB: its WebAssembly memory, which grows as the core needs and never shrinks,
+   * so this is the most it has used so far (for the bench's memory per worker).
+   */
+  memoryMB(): number;
   /** Test-only: the option defaults, ranges and auto-N constants the core declares (lib/core/options.ts must agree). */
   optionLimits(): { defaults: Record<string, unknown>; ranges: Record<string, [number, number]>; autoN: Record<string, number> };
 }

@@ -26,6 +26,19 @@ describe('memory limit', () => {
     expect(Math.max(...distance)).toBeGreaterThan(10);
   });
 
+  it('reports its memory, which grows with the mesh and stays within the limit', async () => {
+    const fresh = await loadCoreNode({ memoryLimitMB: LIMIT_MB });
+    const before = fresh.memoryMB();
+    expect(before).toBeGreaterThanOrEqual(64);
+    const surface = fresh.openSurface(torus(10, 3, 200, 100)); // 40K faces
+    surface.distanceFromVertex(0);
+    surface.dispose();
+    const after = fresh.memoryMB();
+    expect(after).toBeGreaterThan(before);
+    expect(after).toBeLessThanOrEqual(LIMIT_MB);
+    expect(fresh.memoryMB()).toBe(after); // WebAssembly memory never shrinks: the peak so far
+  });
+
   it('refuses a limit outside what the core can address', async () => {
     await expect(loadCoreNode({ memoryLimitMB: 16 })).rejects.toThrow(/memoryLimitMB must be between 64 and 4096/);
   });

@@ -6,9 +6,9 @@
 // and 0.0148 -> 0.0049; docs/skeleton.md).
 import { beforeAll, describe, expect, it } from 'vitest';
 import { vertexMapRadii } from '../../bench/metrics.ts';
-import { loadCoreNode, type Core, type MeshArrays, type Skeleton } from '../../lib/core/node.ts';
-import { graphTopology } from '../../lib/graph/topology.ts';
+import { loadCoreNode, type Core, type Evaluation, type MeshArrays, type Skeleton } from '../../lib/core/node.ts';
 import { readMesh } from './support/meshes.ts';
+import { nodePieces } from './support/skeletons.ts';
 import { sharedSynthetic } from '../paths.ts';
 
 let core: Core;
@@ -22,6 +22,7 @@ describe.each([
 ])('the skeleton of $shape', ({ shape, fittedBound, mapBound }) => {
   let mesh: MeshArrays;
   let skeleton: Skeleton;
+  let fitted: Evaluation;
   beforeAll(() => {
     mesh = readMesh(sharedSynthetic(`${shape}.ply`));
     const surface = core.openRefinedSurface(mesh);
@@ -30,27 +31,21 @@ describe.each([
     } finally {
       surface.dispose();
     }
+    fitted = core.evaluate(mesh, { nodes: skeleton.nodes, edges: skeleton.edges, radii: null });
   });
 
   it('rebuilds the shape with radii fitted to the surface (nodes centred on their elements)', () => {
-    expect(core.evaluate(mesh, { nodes: skeleton.nodes, edges: skeleton.edges, radii: null }).reconError).toBeLessThan(fittedBound);
+    expect(fitted.reconError).toBeLessThan(fittedBound);
   });
 
   it('rebuilds the shape with radii from the vertex map (each node\'s vertices around it)', () => {
     const graph = { nodes: skeleton.nodes, edges: skeleton.edges };
     // Nodes that own no vertex take their neighbours' radii; those of components that own none (none here) the fitted ones.
-    const fitted = core.evaluate(mesh, { ...graph, radii: null }).radii;
-    const { radii } = vertexMapRadii(mesh.positions, graph, skeleton.vertexToNode, fitted);
+    const { radii } = vertexMapRadii(mesh.positions, graph, skeleton.vertexToNode, fitted.radii);
     expect(core.evaluate(mesh, { ...graph, radii }).reconError).toBeLessThan(mapBound);
   });
 
   it('gives every node a connected piece of the surface', () => {
-    const vertexCount = mesh.positions.length / 3;
-    const sameNode: number[] = [];
-    for (let c = 0; c < mesh.triangles.length; c++) {
-      const a = mesh.triangles[c], b = mesh.triangles[c % 3 === 2 ? c - 2 : c + 1];
-      if (skeleton.vertexToNode[a] === skeleton.vertexToNode[b]) sameNode.push(a, b);
-    }
-    expect(graphTopology(vertexCount, sameNode).components).toBe(new Set(skeleton.vertexToNode).size);
+    expect(nodePieces(mesh, skeleton.vertexToNode)).toBe(new Set(skeleton.vertexToNode).size);
   });
 });

@@ -20,6 +20,20 @@ export function closedConnectedMeshes(): { file: string; genus: number }[] {
 export const point = (flat: ArrayLike<number>, i: number) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]];
 export const distance3 = (a: number[], b: number[]) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 
+/**
+ * Connected pieces of the surface that the vertex map gives the nodes: the mesh edges whose two
+ * vertices share a node join them. Equal to the number of nodes that own vertices when every node's
+ * vertices are one piece.
+ */
+export function nodePieces(mesh: { triangles: ArrayLike<number>; positions: ArrayLike<number> }, vertexToNode: ArrayLike<number>): number {
+  const withinNodes: number[] = [];
+  for (let c = 0; c < mesh.triangles.length; c++) {
+    const a = mesh.triangles[c], b = mesh.triangles[c % 3 === 2 ? c - 2 : c + 1];
+    if (vertexToNode[a] === vertexToNode[b]) withinNodes.push(a, b);
+  }
+  return graphTopology(mesh.positions.length / 3, withinNodes).components;
+}
+
 /** What is wrong with the auto-mode skeleton of a closed connected mesh: not connected, cycles other than the genus, nodes outside. */
 export function topologyProblems(core: Core, file: string, genus: number): string[] {
   const mesh = readMesh(sharedMesh(file));

@@ -148,18 +148,19 @@ void compactVertexMap(std::vector<uint32_t>& nodeOfElement, const SkeletonGraph&
     const uint32_t piece = pieces.find(v);
     if (best == kNone || pieceWeight[piece] > pieceWeight[best]) best = piece;
   }
+  std::vector<uint32_t> orphans;
+  for (uint32_t v = 0; v < count; v++)
+    if (pieces.find(v) != largest[nodeOfElement[v]]) orphans.push_back(v);
+  if (orphans.empty()) return;
   std::vector<std::vector<uint32_t>> neighbours(count);
   for (const auto& [a, b] : samples.edges) {
     neighbours[a].push_back(b);
     neighbours[b].push_back(a);
   }
-  std::vector<uint32_t> orphans;
-  for (uint32_t v = 0; v < count; v++)
-    if (pieces.find(v) != largest[nodeOfElement[v]]) orphans.push_back(v);
   std::vector<uint32_t> moved(orphans.size());
   for (size_t k = 0; k < orphans.size(); k++) moved[k] = std::exchange(nodeOfElement[orphans[k]], kNone);
   // Growing a connected set by elements beside it keeps it connected.
-  for (bool changed = !orphans.empty(); changed;) {
+  for (bool changed = true; changed;) {
     changed = false;
     for (uint32_t v : orphans) {
       if (nodeOfElement[v] != kNone) continue;

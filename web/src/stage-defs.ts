@@ -163,7 +163,7 @@ export const STAGES: readonly StageDef[] = [
     group: 'shape',
     section: 'Sec. 4.2.4',
     caption:
-      'Every vertex belongs to the packed loop nearest to it along the surface (a watershed from all loops at once), so each loop owns the region around it. Each region is then cut into bands of that distance, about a loop radius wide, and every connected piece of a band becomes a node: one colour per node. A long or tapering region gets a node every radius and a tip one of its own; a band that splits around a fork gives each prong its own; pieces cut by a region border join the last whole cross-section.',
+      'Every vertex belongs to the packed loop nearest to it along the surface (a watershed from all loops at once), so each loop owns the region around it. Each region is then cut into bands of that distance, about a loop radius wide, and every connected piece of a band becomes a node; each vertex then goes to its nearest node along the skeleton: one colour per node. A long or tapering region gets a node every radius and a tip one of its own; a band that splits around a fork gives each prong its own; pieces cut by a region border join the last whole cross-section.',
     layers: ['sk-packed'],
     dimmed: ['sk-packed'],
     legend: [],

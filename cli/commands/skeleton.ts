@@ -63,7 +63,7 @@ export const skeleton: Command = {
     workers: {
       type: 'string',
       value: 'K',
-      description: `threads for stage 1, this one included (default: every core but one, here ${defaultWorkers()}); they share each round of --round-size sources, so with --round-size 1 they have nothing to share; the skeleton does not depend on K`,
+      description: `threads that compute stage 1 (default: every core but one, here ${defaultWorkers()}); with K > 1 this thread only draws the sources and takes the results, and the K threads share each round of --round-size sources, so with --round-size 1 they have nothing to share; the skeleton does not depend on K`,
     },
   },
   details: [

@@ -7,11 +7,11 @@ import { compiledCore } from './node.ts';
 import type { SeparatorWorker } from './pool.ts';
 import { CoreError, type CandidateRecord, type CoreErrorKind, type MeshArrays, type Options } from './types.ts';
 
-/** Threads in all by default (the caller's included): every core but one, at least one. */
+/** Threads that compute stage 1 by default: every core but one, at least one. */
 export const defaultWorkers = () => Math.max(1, os.availableParallelism() - 1);
 
 export interface PoolSettings {
-  /** Threads in all, the caller's included (1: no pool). */
+  /** Threads that compute stage 1 (1: none but the caller's, no pool); the caller's only draws and accepts. */
   workers: number;
   /** The memory limit of each thread's core (CoreSettings.memoryLimitMB). */
   memoryLimitMB?: number;
@@ -54,9 +54,9 @@ export class ThreadWorker implements SeparatorWorker {
   }
 }
 
-/** `workers - 1` threads beside the caller's, each ready (its surface and pipeline open) when this resolves. */
+/** `workers` threads (none for 1), each ready (its surface and pipeline open) when this resolves. */
 export async function openNodePool(mesh: MeshArrays, options: Partial<Options>, settings: PoolSettings): Promise<NodePool> {
-  const count = Math.max(0, Math.floor(settings.workers) - 1);
+  const count = settings.workers >= 2 ? Math.floor(settings.workers) : 0;
   // One compile of the core for all threads (each instantiates its own copy of it).
   const wasm = count > 0 ? await compiledCore() : null;
   const threads = Array.from({ length: count }, () => new Worker(new URL('./node-pool-thread.mjs', import.meta.url), {

@@ -36,6 +36,8 @@ export async function runStage1(pipeline: Pipeline, workers: readonly SeparatorW
       const progress = pipeline.step(1);
       hooks.progress?.(progress);
       if (progress.finished) return progress;
+      // Every worker lost: a cancel must still get in between rounds (a caller without workers has none to hear).
+      if (workers.length > 0) await yieldToEvents();
       continue;
     }
     const round = pipeline.drawRound();

@@ -76,6 +76,21 @@ describe('stage 1 on a pool of worker threads', () => {
     await spare.close();
   }, 120_000);
 
+  it('still hears a cancel, an event, once every worker is lost', async () => {
+    const lost: SeparatorWorker = { separators: () => Promise.reject(new Error('worker crashed')) };
+    let cancelled = false;
+    let rounds = 0;
+    const run = skeletonWith([lost], {
+      // The cancel comes as a message would: after the run has let events in.
+      progress: () => ++rounds === 2 && setTimeout(() => (cancelled = true), 0),
+      check: () => {
+        if (cancelled) throw new Error('cancelled');
+      },
+    });
+    await expect(run).rejects.toThrow('cancelled');
+    expect(rounds).toBeLessThan(OPTIONS.n as number / OPTIONS.roundSize);
+  }, 120_000);
+
   it('stops at a cancel', async () => {
     let checks = 0;
     const cancelled = skeletonWith(pool.workers, {

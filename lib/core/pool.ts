@@ -17,6 +17,23 @@ const IN_FLIGHT = 2;
 /** Lets the workers' replies in between two sources computed here. */
 const yieldToEvents = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
 
+/** How often a cancel is looked for while only workers compute (ms). */
+const CHECK_MS = 20;
+
+/** Waits for `work`, calling `check` meanwhile: a worker may hold a source for seconds, a cancel must not wait for it. */
+async function waitHearing(work: Promise<unknown>, check?: () => void): Promise<void> {
+  if (!check) {
+    await work;
+    return;
+  }
+  let done = false;
+  const settled = work.then(() => (done = true));
+  while (!done) {
+    await Promise.race([settled, new Promise((resolve) => setTimeout(resolve, CHECK_MS))]);
+    check();
+  }
+}
+
 export interface Stage1Hooks {
   /** After each round. */
   progress?: (progress: PipelineProgress) => void;
@@ -61,7 +78,7 @@ export async function runStage1(pipeline: Pipeline, workers: readonly SeparatorW
       await yieldToEvents();
       hooks.check?.();
     }
-    await Promise.all(remote);
+    await waitHearing(Promise.all(remote), hooks.check);
     // A worker lost at the end of the round left its source to nobody.
     for (let i = queue.shift(); i !== undefined; i = queue.shift()) records[i] = pipeline.separators(round.slice(i, i + 1))[0];
     const progress = pipeline.accept(records);

@@ -91,6 +91,18 @@ describe('stage 1 on a pool of worker threads', () => {
     expect(rounds).toBeLessThan(OPTIONS.n as number / OPTIONS.roundSize);
   }, 120_000);
 
+  it('hears a cancel while a worker holds its sources without answering', async () => {
+    const silent: SeparatorWorker = { separators: () => new Promise(() => {}) };
+    let cancelled = false;
+    setTimeout(() => (cancelled = true), 200);
+    const run = skeletonWith([silent], {
+      check: () => {
+        if (cancelled) throw new Error('cancelled');
+      },
+    });
+    await expect(run).rejects.toThrow('cancelled');
+  }, 20_000);
+
   it('stops at a cancel', async () => {
     let checks = 0;
     const cancelled = skeletonWith(pool.workers, {

@@ -93,11 +93,6 @@ export abstract class PooledWorker implements SeparatorWorker {
 
   protected abstract send(request: PoolRequest): void;
 
-  /** Sources asked and not answered yet. */
-  get busy(): boolean {
-    return this.pending.size > 0;
-  }
-
   get failed(): boolean {
     return this.failure !== null;
   }

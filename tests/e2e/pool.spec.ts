@@ -16,6 +16,8 @@ const shownRun = (page: Page) => page.evaluate(() => window.cscd!.skeletonRun())
 async function runWith(page: Page, workers: number, runs: number): Promise<void> {
   await setCheck(page, 'workers-auto', false);
   await setNumber(page, 'workers', workers);
+  // A run setting, not an option: the skeleton shown stays (an option change would drop it at once).
+  expect(await shownRun(page)).not.toBeNull();
   await page.getByTestId('sk-compute').click();
   await expect(body(page)).toHaveAttribute('data-skeleton-runs', String(runs), { timeout: 60_000 });
   await waitForState(page, 'ready');
@@ -34,6 +36,7 @@ test('the saved skeleton is the same, byte for byte, on 1, 2 and 3 workers', asy
   const alone = await savedJson(page);
   expect(JSON.parse(alone)).toMatchObject({ options: { n: 12, roundSize: 4, seed: 7 } });
   expect(alone).not.toMatch(/workers/);
+  await expect(page.getByTestId('opt-workers')).toHaveAttribute('title', /Threads of stage 1.*the skeleton does not depend on it/);
 
   for (const [workers, runs] of [[2, 2], [3, 3]]) {
     await runWith(page, workers, runs);

@@ -91,11 +91,12 @@ describe('stage 1 on a pool of worker threads', () => {
     expect(rounds).toBeLessThan(OPTIONS.n as number / OPTIONS.roundSize);
   }, 120_000);
 
-  it('hears a cancel while a worker holds its sources without answering', async () => {
-    const silent: SeparatorWorker = { separators: () => new Promise(() => {}) };
+  it('hears a cancel while the workers hold the round without answering', async () => {
+    // Two workers, two sources each: the whole round of 4 is theirs, this thread only waits.
+    const silent = (): SeparatorWorker => ({ separators: () => new Promise(() => {}) });
     let cancelled = false;
     setTimeout(() => (cancelled = true), 200);
-    const run = skeletonWith([silent], {
+    const run = skeletonWith([silent(), silent()], {
       check: () => {
         if (cancelled) throw new Error('cancelled');
       },

@@ -5,9 +5,11 @@
 // page and Node `--repeats` times per mesh so that drift of the machine affects both alike. Reports
 // stage 1 as each measures it (the page: the sum of the worker's `pipeline.step` calls, without
 // messages or drawing; Node: from the first step to the last), the ratio of their medians and whether
-// both drew the same number of sources, as a table in bench/results/<date>-page.md.
+// both drew the same number of sources, as a table in bench/results/<date>-page.md. With --workers K
+// (and --round-size R: with the default 1 a round has nothing to share) both run stage 1 on K threads:
+// the page's workers setting, in its address, and the Node runner's pool.
 //
-//   node --import tsx bench/page.ts [--repeats 3] [--port 4180] [--no-build] [meshes...]
+//   node --import tsx bench/page.ts [--repeats 3] [--port 4180] [--no-build] [--workers K] [--round-size R] [meshes...]
 import { spawn, spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, writeFileSync, existsSync } from 'node:fs';
 import os from 'node:os';
@@ -15,15 +17,27 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { chromium } from '@playwright/test';
+import { defaultOptions, OPTIONS, optionProblem, parseSettingText, WORKERS } from '../lib/core/options.ts';
 import { parseMesh } from '../lib/io/index.ts';
 import { median } from './metrics.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const { positionals, values } = parseArgs({
   allowPositionals: true,
-  options: { repeats: { type: 'string', default: '3' }, port: { type: 'string', default: '4180' }, 'no-build': { type: 'boolean', default: false } },
+  options: {
+    repeats: { type: 'string', default: '3' },
+    port: { type: 'string', default: '4180' },
+    'no-build': { type: 'boolean', default: false },
+    workers: { type: 'string', default: '1' },
+    'round-size': { type: 'string', default: String(defaultOptions.roundSize) },
+  },
 });
 const repeats = Number(values.repeats), port = Number(values.port);
+const workers = parseSettingText(WORKERS, values.workers);
+const roundSize = Number(values['round-size']);
+if (typeof workers !== 'number' || optionProblem(OPTIONS.find((o) => o.key === 'roundSize')!, roundSize)) throw new Error('--workers and --round-size take whole numbers from 1 to 256');
+/** The run's settings in the page's address (web/src/ui/url-state.ts). */
+const pageHash = `#workers=${workers}&roundSize=${roundSize}`;
 const DEFAULT_MESHES = ['bob', 'fertility_9k', 'hand', 'armadillo', 'horse'];
 const folders = ['meshes', 'synthetic'].map((f) => path.resolve(repoRoot, '..', 'shared', 'data', f));
 const all = folders.flatMap((d) => readdirSync(d).filter((f) => f.endsWith('.ply')).map((f) => path.join(d, f)));
@@ -38,7 +52,8 @@ const loadBefore = os.loadavg();
 
 function node(file: string): { stage1Ms: number; sources: number } {
   const out = path.join(tmp, `${path.basename(file)}.json`);
-  const result = spawnSync(process.execPath, ['--import', 'tsx', 'bench/runners/cscd.ts', file, out], { cwd: repoRoot, encoding: 'utf8' });
+  const args = ['--workers', String(workers), '--round-size', String(roundSize)];
+  const result = spawnSync(process.execPath, ['--import', 'tsx', 'bench/runners/cscd.ts', file, out, ...args], { cwd: repoRoot, encoding: 'utf8' });
   if (result.status !== 0) throw new Error(`${path.basename(file)} in Node: ${result.stderr.trim().split('\n').pop()}`);
   const { stage1Seconds } = JSON.parse(result.stdout.trim().split('\n').pop()!) as { stage1Seconds: number };
   return { stage1Ms: 1000 * stage1Seconds, sources: (JSON.parse(readFileSync(out, 'utf8')) as { stats: { n: number } }).stats.n };
@@ -73,7 +88,7 @@ try {
         }
         // A fresh page each time, as a person opening the site: its worker loads and compiles the core.
         const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
-        await page.goto(url);
+        await page.goto(`${url}${pageHash}`);
         await page.locator('body[data-state="ready"]').waitFor({ timeout: 120_000 });
         await page.getByTestId('file-input').setInputFiles(file);
         await page.waitForFunction((v) => document.querySelector('[data-testid="facts-vertices"]')?.textContent === String(v)
@@ -82,6 +97,7 @@ try {
         await page.locator('body[data-sk-run="done"]').waitFor({ timeout: 600_000 });
         const run = await page.evaluate(() => window.cscd!.skeletonRun());
         if (!run) throw new Error(`${row.mesh}: the page shows no skeleton`);
+        if (run.workers !== Math.min(workers, roundSize)) throw new Error(`${row.mesh}: the page ran stage 1 on ${run.workers} workers, not ${workers}`);
         row.page.push(run.stage1Ms);
         row.pageSources = run.sources;
         await page.close();
@@ -109,9 +125,9 @@ const lines = [
     + `Machine: ${os.cpus().length} cores (${os.cpus()[0]?.model.trim()}), Node ${process.version}, ${chromiumVersion} (headless, --disable-gpu); `
     + `load average ${loadBefore.map((x) => x.toFixed(2)).join(' ')} at the start.`,
   '',
-  `\`node --import tsx bench/page.ts${process.argv.slice(2).length ? ` ${process.argv.slice(2).join(' ')}` : ''}\`: default options (auto N, seed 1), `
+  `\`node --import tsx bench/page.ts${process.argv.slice(2).length ? ` ${process.argv.slice(2).join(' ')}` : ''}\`: default options (auto N, seed 1) but roundSize ${roundSize}, stage 1 on ${workers} thread${workers === 1 ? '' : 's'}, `
     + `${repeats} runs each, page and Node alternating; the page a fresh tab each run (its worker loads and compiles the core), Node a fresh process. `
-    + `Stage 1: the page's worker sums its \`pipeline.step\` calls (no messages, no drawing); Node's runner times \`runStage1\`.`,
+    + `Stage 1: the page's worker sums its \`pipeline.step\` calls (no messages, no drawing), or on a pool times \`runStage1\` as Node's runner does.`,
   '',
   '| mesh | sources (page / Node) | page stage 1, ms (runs) | Node stage 1, ms (runs) | page / Node (medians) |',
   '| --- | ---: | ---: | ---: | ---: |',
@@ -121,6 +137,6 @@ const lines = [
   '',
 ];
 const date = new Date().toISOString().slice(0, 10);
-const out = path.join(repoRoot, 'bench', 'results', `${date}-page.md`);
+const out = path.join(repoRoot, 'bench', 'results', `${date}-page${workers > 1 ? `-k${workers}` : ''}.md`);
 writeFileSync(out, lines.join('\n'));
 process.stdout.write(`${lines.join('\n')}\nwrote ${path.relative(repoRoot, out)}\n`);

@@ -1,5 +1,17 @@
 import { writeFile } from 'node:fs/promises';
-import { cliFlag, defaultOptions, NUMBER_TEXT, OPTIONS, optionProblem, parseOptionText, type OptionSpec } from '../../lib/core/options.ts';
+import {
+  cliFlag,
+  defaultOptions,
+  defaultRunSettings,
+  NUMBER_TEXT,
+  OPTIONS,
+  optionProblem,
+  parseSpecText,
+  SETTINGS,
+  type OptionSpec,
+  type RunSettings,
+  type SettingSpec,
+} from '../../lib/core/options.ts';
 import { random } from '../../lib/core/random.ts';
 import type { MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
 import { UsageError, openSolver, readMesh, type Command, type OptionSpec as CliOptionSpec, type OptionValues } from '../command.ts';
@@ -28,17 +40,17 @@ export type SeparatorJson = Omit<
   refined: Refinement | null;
 };
 
-function flagSpec(spec: OptionSpec): CliOptionSpec {
+function flagSpec(spec: OptionSpec | SettingSpec): CliOptionSpec {
   if (spec.kind === 'switch') return { type: 'boolean', description: spec.default ? `do not ${spec.help}` : spec.help };
   const value = spec.kind === 'choice' ? Object.keys(spec.choices).join('|') : spec.placeholder;
   return { type: 'string', value, description: `${spec.help} (default ${String(spec.default)})` };
 }
 
-/** An option's value from its flag; a usage error names the flag and what it accepts. */
-function parseFlag(spec: OptionSpec, given: string | boolean, flag: string): Options[keyof Options] {
+/** An option's or run setting's value from its flag; a usage error names the flag and what it accepts. */
+function parseFlag(spec: OptionSpec | SettingSpec, given: string | boolean, flag: string): unknown {
   if (spec.kind === 'switch') return spec.default ? !given : Boolean(given);
   const text = String(given);
-  const parsed = parseOptionText(spec, text);
+  const parsed = parseSpecText(spec, text);
   if (parsed !== null) return parsed;
   const notANumber = spec.kind === 'number' && !NUMBER_TEXT.test(text);
   throw new UsageError(`--${flag} ${notANumber ? 'must be a number' : optionProblem(spec, NaN)}, got '${text}'`);
@@ -61,6 +73,21 @@ export function optionsFromFlags(values: OptionValues): Options {
     if (value !== undefined && !Array.isArray(value)) options[spec.key] = parseFlag(spec, value, flag);
   }
   return options as unknown as Options;
+}
+
+/** The run settings' flags (`--workers`), for the commands that can run stage 1 on a pool. */
+export function settingFlagSpecs(): Record<string, CliOptionSpec> {
+  return Object.fromEntries(SETTINGS.map((s) => [s.flag, flagSpec(s)]));
+}
+
+/** The run settings of a command line: defaults, overridden by the flags that were given. */
+export function settingsFromFlags(values: OptionValues): RunSettings {
+  const settings: Record<string, unknown> = { ...defaultRunSettings };
+  for (const spec of SETTINGS) {
+    const value = values[spec.flag];
+    if (value !== undefined && !Array.isArray(value)) settings[spec.key] = parseFlag(spec, value, spec.flag);
+  }
+  return settings as unknown as RunSettings;
 }
 
 /**

@@ -1,18 +1,26 @@
 import { writeFile } from 'node:fs/promises';
+import os from 'node:os';
 import path from 'node:path';
-import { defaultWorkers, openNodePool } from '../../lib/core/node-pool.ts';
+import { openNodePool } from '../../lib/core/node-pool.ts';
+import { AUTO_N, type RunSettings } from '../../lib/core/options.ts';
 import { runStage1 } from '../../lib/core/pool.ts';
-import type { PipelineProgress, Skeleton } from '../../lib/core/types.ts';
+import { poolSize } from '../../lib/core/pool-size.ts';
+import type { MeshArrays, Options, PipelineProgress, Skeleton } from '../../lib/core/types.ts';
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
 import { UsageError, decimateIfAsked, decimateOption, openSolver, readMesh, type Command, type OptionValues, type Output } from '../command.ts';
-import { optionFlagSpecs, optionsFromFlags } from './separator.ts';
+import { optionFlagSpecs, optionsFromFlags, settingFlagSpecs, settingsFromFlags } from './separator.ts';
 
-/** --workers K: a whole number from 1 up; more threads than a round has sources would idle. */
-function workersFrom(values: OptionValues, roundSize: number): number {
-  if (values.workers === undefined) return Math.min(defaultWorkers(), roundSize);
-  const k = Number(values.workers);
-  if (!(Number.isInteger(k) && k >= 1 && k <= 256)) throw new UsageError(`--workers must be a whole number from 1 to 256, got '${String(values.workers)}'`);
-  return Math.min(k, roundSize);
+/** Threads of stage 1 (lib/core/pool-size.ts: the page's rule, with this machine's cores and memory). */
+function threadsFor(settings: RunSettings, options: Options, mesh: MeshArrays): number {
+  return poolSize({
+    workers: settings.workers,
+    cores: os.availableParallelism(),
+    memoryGB: os.totalmem() / 2 ** 30,
+    // The mesh as read: refinement only touches coarse meshes, which are small.
+    vertices: mesh.positions.length / 3,
+    roundSize: options.roundSize,
+    sourcesLeft: options.n === 'auto' ? AUTO_N.max : options.n,
+  }).workers;
 }
 /** At most this often (ms) is the progress line redrawn. */
 const PROGRESS_INTERVAL = 100;
@@ -60,11 +68,7 @@ export const skeleton: Command = {
     format: { type: 'string', value: SKELETON_FORMATS.join('|'), description: 'output format (default: from the --out extension, else json)' },
     out: { type: 'string', value: 'FILE', description: 'write the skeleton to FILE instead of stdout' },
     verbose: { type: 'boolean', short: 'v', description: 'print the summary line on stderr even when it is not a terminal' },
-    workers: {
-      type: 'string',
-      value: 'K',
-      description: `threads that compute stage 1 (default: every core but one, here ${defaultWorkers()}); with K > 1 this thread only draws the sources and takes the results, and the K threads share each round of --round-size sources, so with --round-size 1 they have nothing to share; the skeleton does not depend on K`,
-    },
+    ...settingFlagSpecs(),
   },
   details: [
     'Draws N sources with the seed (--n auto: until new separators stop adding coverage), finds a local',
@@ -74,13 +78,14 @@ export const skeleton: Command = {
   ].join('\n'),
   async run([file], values, io) {
     const options = optionsFromFlags(values);
+    const settings = settingsFromFlags(values);
     const format = outputFormat(values);
     const mesh = decimateIfAsked(await readMesh(file, io), values, file, io);
     const tty = io.stderr.isTTY === true;
     const progress = new ProgressLine(io.stderr);
     const name = path.basename(file);
 
-    const workers = workersFrom(values, options.roundSize);
+    const workers = threadsFor(settings, options, mesh);
     const started = performance.now();
     let result: Skeleton;
     // The pool's threads open the mesh while this one does.

@@ -83,6 +83,35 @@ export const OPTIONS: readonly OptionSpec[] = Object.freeze([
   },
 ] satisfies OptionSpec[]);
 
+/**
+ * Settings of a run: how it is computed, never what it gives. Unlike the options they reach neither
+ * the core nor the skeleton's JSON, so the same options give the same file whatever they are.
+ */
+export interface RunSettings {
+  /** Threads of stage 1 in all, the caller's included, or auto (poolSize, lib/core/pool-size.ts). */
+  workers: number | 'auto';
+}
+
+/** A run setting, declared as an option is: its CLI flag, the page's label (the key) and its link parameter. */
+export interface SettingSpec {
+  key: keyof RunSettings;
+  flag: string;
+  kind: 'count';
+  default: 'auto';
+  range: readonly [number, number];
+  placeholder: string;
+  help: string;
+}
+
+export const WORKERS: SettingSpec = Object.freeze({
+  key: 'workers', flag: 'workers', kind: 'count', default: 'auto', range: Object.freeze([1, 256] as const), placeholder: 'K|auto',
+  help: 'threads that compute stage 1 (with more than 1, the pipeline\'s own thread only draws the sources and takes the results); they share each round of roundSize sources, so with roundSize 1 there is nothing to share; auto: every core but one, fewer when memory is short (docs/parallel.md); the skeleton does not depend on it',
+});
+
+export const SETTINGS: readonly SettingSpec[] = Object.freeze([WORKERS]);
+
+export const defaultRunSettings: Readonly<RunSettings> = Object.freeze({ workers: WORKERS.default });
+
 /** Defaults of every option. */
 export const defaultOptions: Readonly<Options> = Object.freeze(
   Object.fromEntries(OPTIONS.map((o) => [o.key, o.default])) as unknown as Options,
@@ -95,7 +124,7 @@ export const optionRanges: Readonly<Record<NumericKey, readonly [number, number]
 );
 
 /** Why a value is not acceptable for an option (null when it is). */
-export function optionProblem(spec: OptionSpec, value: unknown): string | null {
+export function optionProblem(spec: OptionSpec | SettingSpec, value: unknown): string | null {
   switch (spec.kind) {
     case 'choice':
       return typeof value === 'string' && Object.hasOwn(spec.choices, value) ? null : `must be one of ${Object.keys(spec.choices).join(', ')}`;
@@ -125,12 +154,21 @@ export function cliFlag(spec: OptionSpec): string {
 
 /** An option's value from its text (String(value) writes it); null when it is not acceptable. */
 export function parseOptionText<K extends keyof Options>(spec: Extract<OptionSpec, { key: K }>, text: string): Options[K] | null {
-  const s = spec as OptionSpec;
+  return parseSpecText(spec as OptionSpec, text) as Options[K] | null;
+}
+
+/** A run setting's value from its text; null when it is not acceptable. */
+export function parseSettingText<K extends keyof RunSettings>(spec: SettingSpec & { key: K }, text: string): RunSettings[K] | null {
+  return parseSpecText(spec, text) as RunSettings[K] | null;
+}
+
+/** The value of an option or run setting from its text, of the type its spec says; null when it is not acceptable. */
+export function parseSpecText(spec: OptionSpec | SettingSpec, text: string): unknown {
   let value: unknown = text;
-  if (s.kind === 'switch') value = text === 'true' ? true : text === 'false' ? false : null;
-  else if (s.kind === 'integer' || (s.kind === 'count' && text !== 'auto')) value = /^\d+$/.test(text) ? Number(text) : null;
-  else if (s.kind === 'number') value = NUMBER_TEXT.test(text) ? Number(text) : null;
-  return optionProblem(s, value) === null ? (value as Options[K]) : null;
+  if (spec.kind === 'switch') value = text === 'true' ? true : text === 'false' ? false : null;
+  else if (spec.kind === 'integer' || (spec.kind === 'count' && text !== 'auto')) value = /^\d+$/.test(text) ? Number(text) : null;
+  else if (spec.kind === 'number') value = NUMBER_TEXT.test(text) ? Number(text) : null;
+  return optionProblem(spec, value) === null ? value : null;
 }
 
 

@@ -13,10 +13,30 @@ export interface SeparatorWorker {
   separators(sources: Uint32Array): Promise<CandidateRecord[]>;
 }
 
+/** Lets events (a cancel) in between two rounds computed here. */
+const yieldToEvents = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
+
+/** How often a cancel is looked for while the workers compute (ms). */
+const CHECK_MS = 20;
+
+/** Waits for `work`, calling `check` meanwhile: a worker may hold a source for seconds, a cancel must not wait for it. */
+async function waitHearing(work: Promise<unknown>, check?: () => void): Promise<void> {
+  if (!check) {
+    await work;
+    return;
+  }
+  let done = false;
+  const settled = work.then(() => (done = true));
+  while (!done) {
+    await Promise.race([settled, new Promise((resolve) => setTimeout(resolve, CHECK_MS))]);
+    check();
+  }
+}
+
 export interface Stage1Hooks {
   /** After each round. */
   progress?: (progress: PipelineProgress) => void;
-  /** Before each source: throws to stop (a cancel). */
+  /** Before each source, and while waiting for the workers: throws to stop (a cancel). */
   check?: () => void;
   /** A worker failed (it crashed, ran out of memory): its sources are computed by the others. */
   lost?: (worker: SeparatorWorker, error: unknown) => void;
@@ -32,6 +52,8 @@ export async function runStage1(pipeline: Pipeline, workers: readonly SeparatorW
       const progress = pipeline.step(1);
       hooks.progress?.(progress);
       if (progress.finished) return progress;
+      // Every worker lost: a cancel must still get in between rounds (a caller without workers has none to hear).
+      if (workers.length > 0) await yieldToEvents();
       continue;
     }
     const round = pipeline.drawRound();
@@ -58,7 +80,7 @@ export async function runStage1(pipeline: Pipeline, workers: readonly SeparatorW
         }
       }
     };
-    await Promise.all([...alive].map(lane));
+    await waitHearing(Promise.all([...alive].map(lane)), hooks.check && check);
     // Every worker lost during the round: the rest of it here.
     for (let i = queue.shift(); i !== undefined; i = queue.shift()) {
       hooks.check?.();

@@ -180,7 +180,8 @@ describe('cscd skeleton usage', () => {
       [['--n', '100001'], "--n must be auto or an integer from 1 to 100000, got '100001'"],
       [['--prune-length-factor', 'x'], "--prune-length-factor must be a number, got 'x'"],
       [['--prune-length-factor=-1'], "--prune-length-factor must be a number from 0 to 1000, got '-1'"],
-      [['--workers', '0'], "--workers must be a whole number from 1 to 256, got '0'"],
+      [['--workers', '0'], "--workers must be auto or an integer from 1 to 256, got '0'"],
+      [['--workers', 'all'], "--workers must be auto or an integer from 1 to 256, got 'all'"],
     ] as [string[], string][]) {
       const result = await cscd('skeleton', twoTorus, ...args);
       expect(result, args.join(' ')).toEqual({ status: 2, stdout: '', stderr: `cscd: ${message}\n` });

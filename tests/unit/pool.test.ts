@@ -4,6 +4,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core } from '../../lib/core/node.ts';
 import { openNodePool, type NodePool } from '../../lib/core/node-pool.ts';
 import { runStage1, type SeparatorWorker } from '../../lib/core/pool.ts';
+import { PooledWorker, type PoolReply, type PoolRequest } from '../../lib/core/pool-worker.ts';
 import { defaultOptions } from '../../lib/core/options.ts';
 import type { MeshArrays, Options, Skeleton } from '../../lib/core/types.ts';
 import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
@@ -75,6 +76,34 @@ describe('stage 1 on a pool of worker threads', () => {
     await spare.close();
   }, 120_000);
 
+  it('still hears a cancel, an event, once every worker is lost', async () => {
+    const lost: SeparatorWorker = { separators: () => Promise.reject(new Error('worker crashed')) };
+    let cancelled = false;
+    let rounds = 0;
+    const run = skeletonWith([lost], {
+      // The cancel comes as a message would: after the run has let events in.
+      progress: () => ++rounds === 2 && setTimeout(() => (cancelled = true), 0),
+      check: () => {
+        if (cancelled) throw new Error('cancelled');
+      },
+    });
+    await expect(run).rejects.toThrow('cancelled');
+    expect(rounds).toBeLessThan(OPTIONS.n as number / OPTIONS.roundSize);
+  }, 120_000);
+
+  it('hears a cancel while the workers hold the round without answering', async () => {
+    // Two workers, two sources each: the whole round of 4 is theirs, this thread only waits.
+    const silent = (): SeparatorWorker => ({ separators: () => new Promise(() => {}) });
+    let cancelled = false;
+    setTimeout(() => (cancelled = true), 200);
+    const run = skeletonWith([silent(), silent()], {
+      check: () => {
+        if (cancelled) throw new Error('cancelled');
+      },
+    });
+    await expect(run).rejects.toThrow('cancelled');
+  }, 20_000);
+
   it('stops at a cancel', async () => {
     let checks = 0;
     const cancelled = skeletonWith(pool.workers, {
@@ -84,4 +113,40 @@ describe('stage 1 on a pool of worker threads', () => {
     });
     await expect(cancelled).rejects.toThrow('cancelled');
   }, 120_000);
+});
+
+/** A pool worker's owner side on a fake worker that answers when the test says. */
+class FakeWorker extends PooledWorker {
+  readonly sent: PoolRequest[] = [];
+  protected send(request: PoolRequest): void {
+    this.sent.push(request);
+  }
+  reply(reply: PoolReply): void {
+    this.receive(reply);
+  }
+}
+
+describe('the owner side of a pool worker (PooledWorker, Node and page alike)', () => {
+  it('settles each request by its reply, and an error of the core by its kind', async () => {
+    const worker = new FakeWorker();
+    const a = worker.separators(Uint32Array.of(1));
+    const b = worker.separators(Uint32Array.of(2));
+    expect(worker.sent.map((r) => [r.id, [...r.sources]])).toEqual([[0, [1]], [1, [2]]]);
+    worker.reply({ id: 1, error: { message: 'out of memory: x', kind: 'memory' } });
+    worker.reply({ id: 0, records: [] });
+    await expect(a).resolves.toEqual([]);
+    await expect(b).rejects.toMatchObject({ kind: 'memory', message: 'out of memory: x' });
+    expect(worker.failed).toBe(false); // a core out of memory still answers
+  });
+
+  it('after a crash reply rejects that request, every other pending one and every later one', async () => {
+    const worker = new FakeWorker();
+    const a = worker.separators(Uint32Array.of(1));
+    const b = worker.separators(Uint32Array.of(2));
+    worker.reply({ id: 0, error: { message: 'Aborted(simulated crash)', kind: 'crash' } });
+    await expect(a).rejects.toThrow('Aborted(simulated crash)');
+    await expect(b).rejects.toThrow('Aborted(simulated crash)');
+    await expect(worker.separators(Uint32Array.of(3))).rejects.toThrow('Aborted(simulated crash)');
+    expect(worker.failed).toBe(true);
+  });
 });

@@ -35,7 +35,7 @@ const offer = new LimitOffer();
 const statusCancel = byTestId<HTMLButtonElement>('status-cancel');
 const viewer = new Viewer(document.querySelector<HTMLElement>('#viewport')!);
 const timeline = new Timeline(document.querySelector<HTMLElement>('#timeline')!);
-const params = new ParamsPanel(document.querySelector<HTMLElement>('#params')!, initial.options);
+const params = new ParamsPanel(document.querySelector<HTMLElement>('#params')!, initial.options, initial.settings);
 const flatBox = document.querySelector<HTMLInputElement>('#opt-flat')!;
 const isolinesBox = document.querySelector<HTMLInputElement>('#opt-isolines')!;
 const viewportHint = document.querySelector<HTMLElement>('#viewport-hint')!;
@@ -93,8 +93,9 @@ function awaitRestart(restored: Promise<unknown>): void {
     });
 }
 
-/** Test hook: `?memoryLimitMB=N` caps the WASM core's memory (see GeometryClient). */
-const memoryLimitMB = Number(new URLSearchParams(location.search).get('memoryLimitMB')) || null;
+/** Test hooks: `?memoryLimitMB=N` caps the WASM cores' memory, `?separatorCrash=N` aborts the first separator worker on its Nth request (see GeometryClient). */
+const search = new URLSearchParams(location.search);
+const testHooks = { memoryLimitMB: Number(search.get('memoryLimitMB')) || null, separatorCrash: Number(search.get('separatorCrash')) || null };
 
 const client = new GeometryClient({
   onProgress: (event) => {
@@ -113,12 +114,13 @@ const client = new GeometryClient({
     if (!whole.running) whole.invalidate();
     awaitRestart(restored);
   },
-}, memoryLimitMB);
+}, testHooks);
 const ctx: StudioContext = {
   viewer,
   client,
   layerColors,
   options: () => params.options,
+  settings: () => params.settings,
   begin: (status) => {
     computing++;
     failed = false;
@@ -369,7 +371,7 @@ function refresh(): void {
   updateDownloads();
   // A file of the user's cannot be linked to: its source vertex would mean nothing on the default sample.
   const sample = mesh?.sample ?? null;
-  writeUrl({ mesh: sample, stage: key, source: sample ? single.source : null, options: params.options });
+  writeUrl({ mesh: sample, stage: key, source: sample ? single.source : null, options: params.options, settings: params.settings });
   // Drawn now, not at the next animation frame: a stage change leaves the state 'ready', so whoever
   // reads the picture once the page shows the new stage must get the new stage's pixels.
   viewer.requestRender();
@@ -449,6 +451,8 @@ params.onChange = (keys) => {
   if (had && stageDef(shownStage()).group === 'shape') enter(shownStage());
   refresh();
 };
+// A run setting changes how the next run is computed, not its result: the skeleton shown stays.
+params.onSettingsChange = () => refresh();
 
 // -- downloads ------------------------------------------------------------------------------------
 
@@ -514,8 +518,8 @@ declare global {
       projectNode(index: number): { x: number; y: number } | null;
       /** Camera along `direction` (towards the camera) at a sphere around `center` (default: the mesh). */
       setView(view: { direction?: [number, number, number]; center?: [number, number, number]; radius?: number }): void;
-      /** The worker's times of the skeleton shown and its number of sources (null: none), for bench/page.ts. */
-      skeletonRun(): (SkeletonReply['timings'] & { sources: number }) | null;
+      /** The worker's times of the skeleton shown, its number of sources and the threads stage 1 started on (null: none), for bench/page.ts and the tests. */
+      skeletonRun(): (SkeletonReply['timings'] & { sources: number; workers: number }) | null;
     };
   }
 }
@@ -531,7 +535,7 @@ window.cscd = {
     viewer.frame({ direction: v(direction), center: v(center), radius });
     viewer.flush();
   },
-  skeletonRun: () => (whole.result ? { ...whole.result.timings, sources: whole.result.skeleton.stats.n } : null),
+  skeletonRun: () => (whole.result ? { ...whole.result.timings, sources: whole.result.skeleton.stats.n, workers: whole.result.pool.workers } : null),
 };
 
 // -- start: the linked view, or the default sample --------------------------------------------------

@@ -1,16 +1,17 @@
 /** What the page lends its two controllers (SingleSource, WholeShape), and the options they send. */
-import { defaultOptions } from '../../lib/core/options.ts';
+import { defaultOptions, type RunSettings } from '../../lib/core/options.ts';
 import type { Options } from '../../lib/core/types.ts';
 import type { Viewer } from './viewer/viewer.ts';
 import type { GeometryClient } from './worker/client.ts';
 
-/** The viewer, the worker, the options and the busy state. */
+/** The viewer, the worker, the options and run settings, and the busy state. */
 export interface StudioContext {
   viewer: Viewer;
   client: GeometryClient;
   /** Colours of the layers, for the layer list. */
   layerColors: Map<string, string>;
   options(): Options;
+  settings(): RunSettings;
   /** A computation starts / ends (page state, busy status). */
   begin(status: string): void;
   end(): void;

@@ -27,7 +27,7 @@ import {
 } from './viewer/skeleton-layers.ts';
 import { GlassSphereLayer } from './viewer/tubes.ts';
 import { WorkerError, type SkeletonJob } from './worker/client.ts';
-import type { EvaluationReply, PipelineNews, SkeletonReply } from './worker/protocol.ts';
+import type { EvaluationReply, PipelineNews, PoolReport, SkeletonReply } from './worker/protocol.ts';
 
 /** Lets the page handle input and draw between two pieces of work. */
 const nextTask = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
@@ -36,6 +36,15 @@ const nextTask = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
 const PROGRESS_REDRAW_MS = 400;
 
 const isSkeletonLayer = (name: string) => name.startsWith('sk-');
+
+const sentence = (text: string) => `${text.charAt(0).toUpperCase()}${text.slice(1)}.`;
+
+/** What stage 1 ran on, when there is something to say: a pool, memory that held it back, a worker lost. */
+function poolSentences(pool: PoolReport): string[] {
+  const on = `Stage 1 on ${pool.workers} worker${pool.workers === 1 ? '' : 's'}`;
+  const head = pool.memoryCapped ? [`${on}: this browser's memory allows no more on a mesh this large.`] : pool.workers > 1 ? [`${on}.`] : [];
+  return [...head, ...pool.notices.map(sentence)];
+}
 
 export class WholeShape {
   result: SkeletonReply | null = null;
@@ -132,7 +141,7 @@ export class WholeShape {
 
     const id = ++this.jobId;
     this.ctx.begin('stage 1: starting…');
-    const job = client.skeleton(changedOptions(options), (news) => {
+    const job = client.skeleton(changedOptions(options), this.ctx.settings().workers, (news) => {
       if (id === this.jobId) this.receive(news);
     });
     this.job = job;
@@ -187,6 +196,10 @@ export class WholeShape {
   }
 
   private receive(news: PipelineNews): void {
+    // A separator worker lost: said at once, the run goes on.
+    if (news.notices.length > (this.lastNews?.notices.length ?? 0)) {
+      this.panel.setStatus({ kind: 'running', title: 'Stage 1 goes on', text: news.notices.map(sentence).join(' ') });
+    }
     this.lastNews = news;
     this.progress = news.total > 0 ? news.done / news.total : 0;
     this.panel.setProgress(news.done, news.total, this.auto ? 'stage 1 · auto: ends when loops stop adding coverage' : 'stage 1');
@@ -257,7 +270,7 @@ export class WholeShape {
     this.panel.setStatus({
       kind: 'done',
       title: 'Skeleton computed',
-      text: `${nodeCount} nodes and ${Math.floor(s.edges.length / 2)} edges from ${s.stats.packed} packed loops of ${s.stats.candidates} candidates.`,
+      text: [`${nodeCount} nodes and ${Math.floor(s.edges.length / 2)} edges from ${s.stats.packed} packed loops of ${s.stats.candidates} candidates.`, ...poolSentences(reply.pool)].join(' '),
     });
     document.body.dataset.skRun = 'done';
     document.body.dataset.skeletonRuns = String(++this.runs);

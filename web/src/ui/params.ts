@@ -1,10 +1,12 @@
 /**
  * Every option in one lil-gui panel, labelled with the option's own name (as in C++, the worker
- * messages and the CLI), each with a tooltip saying what it changes and in which unit, plus presets.
- * The panel owns the current options; `onChange` says which ones the user changed.
+ * messages and the CLI), each with a tooltip saying what it changes and in which unit, plus presets;
+ * and the run settings (`workers`) in a folder of their own, which change how a run is computed,
+ * not its result. The panel owns the current options and settings; `onChange` says which options
+ * the user changed, `onSettingsChange` that a setting changed.
  */
 import GUI, { type Controller } from 'lil-gui';
-import { AUTO_N_RULE, defaultOptions, OPTIONS, optionRanges, type OptionSpec } from '../../../lib/core/options.ts';
+import { AUTO_N_RULE, defaultOptions, OPTIONS, optionRanges, WORKERS, type OptionSpec, type RunSettings } from '../../../lib/core/options.ts';
 import type { Options } from '../../../lib/core/types.ts';
 
 export type OptionKey = keyof Options;
@@ -19,6 +21,7 @@ export function optionTooltip(spec: OptionSpec): string {
 }
 
 const N_AUTO_HELP = `auto: sample sources ${AUTO_N_RULE}.`;
+const WORKERS_AUTO_HELP = 'auto: every core but one, fewer when memory is short (the panel says when), at most roundSize.';
 
 /** Named option sets; each starts from the defaults. */
 export const PRESETS: Readonly<Record<string, Partial<Options>>> = {
@@ -27,34 +30,35 @@ export const PRESETS: Readonly<Record<string, Partial<Options>>> = {
   Fine: { n: 200, pruneLengthFactor: 2 },
 };
 
-/** The panel's model: the options, with `n` split into a checkbox and a number for lil-gui. */
+/** The panel's model: the options and settings, each count (`n`, `workers`) split into a checkbox and a number for lil-gui. */
 interface Model extends Omit<Options, 'n'> {
   nAuto: boolean;
   n: number;
+  workersAuto: boolean;
+  workers: number;
   preset: string;
 }
 
 const FALLBACK_N = 40;
+const FALLBACK_WORKERS = 2;
 const CUSTOM = 'custom';
 
 export class ParamsPanel {
   /** The user changed these options (after editing finished: a slider released, a number entered). */
   onChange: ((changed: OptionKey[]) => void) | null = null;
+  /** The user changed a run setting. */
+  onSettingsChange: (() => void) | null = null;
 
   private readonly gui: GUI;
   private readonly model: Model;
   private readonly nController: Controller;
+  private readonly workersController: Controller;
 
-  constructor(container: HTMLElement, initial: Options) {
-    this.model = { ...toModel(initial), preset: presetOf(initial) };
+  constructor(container: HTMLElement, initial: Options, settings: RunSettings) {
+    this.model = { ...toModel(initial), ...settingsModel(settings), preset: presetOf(initial) };
     const gui = new GUI({ container, title: 'Parameters', width: 284 });
     this.gui = gui;
     const m = this.model;
-    const tag = (c: Controller, key: string, help: string) => {
-      c.domElement.dataset.testid = `opt-${key}`;
-      c.domElement.title = help;
-      return c;
-    };
 
     tag(gui.add(m, 'preset', [...Object.keys(PRESETS), CUSTOM]).name('preset'), 'preset', 'Sets every option: the paper’s defaults, a quick run with few sources, or a finer one with more.')
       .onChange((name: string) => this.applyPreset(name));
@@ -85,25 +89,30 @@ export class ParamsPanel {
           break;
         }
         case 'count':
-          tag(folder.add(m, 'nAuto').name('n auto'), 'n-auto', N_AUTO_HELP).onChange(() => {
-            this.nController.disable(m.nAuto);
-            this.changed(['n']);
-          });
-          nController = tag(folder.add(m, 'n').min(spec.range[0]).step(1), 'n', tip).onFinishChange(changed('n'));
+          nController = addCount(folder, m, 'n', 'nAuto', spec.range, [N_AUTO_HELP, tip], () => this.changed(['n']));
           break;
       }
     }
     this.nController = nController!;
-    this.nController.disable(m.nAuto);
+    const run = gui.addFolder('Run · how, not what');
+    const workersTip = `${WORKERS.help.charAt(0).toUpperCase()}${WORKERS.help.slice(1)}.`;
+    this.workersController = addCount(run, m, 'workers', 'workersAuto', WORKERS.range, [WORKERS_AUTO_HELP, workersTip], () => {
+      // Out-of-range input is shown clamped, as it is used.
+      Object.assign(this.model, settingsModel(this.settings));
+      this.workersController.updateDisplay();
+      this.onSettingsChange?.();
+    });
+  }
+
+  /** The current run settings, clamped to their accepted ranges. */
+  get settings(): RunSettings {
+    const { workersAuto, workers } = this.model;
+    return { workers: workersAuto ? 'auto' : clamp(workers, WORKERS.range, true) };
   }
 
   /** The current options, clamped to their accepted ranges. */
   get options(): Options {
     const m = this.model;
-    const clamp = (x: number, [lo, hi]: readonly [number, number], integer: boolean) => {
-      const v = Number.isFinite(x) ? x : lo;
-      return Math.min(hi, Math.max(lo, integer ? Math.round(v) : v));
-    };
     const options: Record<string, unknown> = {};
     for (const spec of OPTIONS) {
       if (spec.kind === 'choice' || spec.kind === 'switch') options[spec.key] = m[spec.key];
@@ -139,7 +148,38 @@ export class ParamsPanel {
   }
 }
 
-function toModel(options: Options): Omit<Model, 'preset'> {
+function tag(c: Controller, id: string, help: string): Controller {
+  c.domElement.dataset.testid = `opt-${id}`;
+  c.domElement.title = help;
+  return c;
+}
+
+function clamp(x: number, [lo, hi]: readonly [number, number], integer: boolean): number {
+  const v = Number.isFinite(x) ? x : lo;
+  return Math.min(hi, Math.max(lo, integer ? Math.round(v) : v));
+}
+
+/**
+ * A count as lil-gui shows it: a checkbox `<key> auto` and a number field, disabled while auto is on
+ * (testids `opt-<key>-auto` and `opt-<key>`).
+ */
+function addCount<K extends 'n' | 'workers'>(folder: GUI, m: Model, key: K, autoKey: `${K}Auto`, range: readonly [number, number], tips: [auto: string, value: string], onChange: () => void): Controller {
+  const box = tag(folder.add(m, autoKey).name(`${key} auto`), `${key}-auto`, tips[0]);
+  const field = tag(folder.add(m, key).min(range[0]).step(1), key, tips[1]).onFinishChange(onChange);
+  box.onChange(() => {
+    field.disable(m[autoKey]);
+    onChange();
+  });
+  field.disable(m[autoKey]);
+  return field;
+}
+
+function settingsModel(settings: RunSettings): Pick<Model, 'workersAuto' | 'workers'> {
+  const auto = settings.workers === 'auto';
+  return { workersAuto: auto, workers: auto ? FALLBACK_WORKERS : (settings.workers as number) };
+}
+
+function toModel(options: Options): Omit<Model, 'preset' | 'workersAuto' | 'workers'> {
   const auto = options.n === 'auto';
   return { ...options, nAuto: auto, n: auto ? FALLBACK_N : (options.n as number) };
 }

@@ -1,8 +1,8 @@
 /**
  * The view in the address bar, so a link restores it: `#mesh=bob&stage=skeleton&source=812&n=40`.
- * Only options that differ from the defaults are written; anything unreadable is ignored.
+ * Only options and run settings that differ from the defaults are written; anything unreadable is ignored.
  */
-import { defaultOptions, OPTIONS, parseOptionText } from '../../../lib/core/options.ts';
+import { defaultOptions, defaultRunSettings, OPTIONS, parseOptionText, parseSettingText, SETTINGS, type RunSettings } from '../../../lib/core/options.ts';
 import type { Options } from '../../../lib/core/types.ts';
 import { isStageKey, type StageKey } from '../stage-defs.ts';
 
@@ -12,6 +12,7 @@ export interface ViewState {
   stage: StageKey | null;
   source: number | null;
   options: Options;
+  settings: RunSettings;
 }
 
 export function readUrl(hash = location.hash): ViewState {
@@ -22,6 +23,11 @@ export function readUrl(hash = location.hash): ViewState {
     const value = raw === null ? null : parseOptionText(spec, raw.trim());
     if (value !== null) options[spec.key] = value;
   }
+  const settings: Record<string, unknown> = { ...defaultRunSettings };
+  for (const spec of SETTINGS) {
+    const value = parseSettingText(spec, params.get(spec.key)?.trim() ?? '');
+    if (value !== null) settings[spec.key] = value;
+  }
   const source = Number(params.get('source') ?? NaN);
   const stage = params.get('stage');
   const mesh = params.get('mesh');
@@ -30,6 +36,7 @@ export function readUrl(hash = location.hash): ViewState {
     stage: isStageKey(stage) ? stage : null,
     source: Number.isInteger(source) && source >= 0 ? source : null,
     options: options as unknown as Options,
+    settings: settings as unknown as RunSettings,
   };
 }
 
@@ -42,6 +49,7 @@ export function writeUrl(state: ViewState): void {
   for (const key of Object.keys(defaultOptions) as Array<keyof Options>) {
     if (state.options[key] !== defaultOptions[key]) params.set(key, String(state.options[key]));
   }
+  for (const { key } of SETTINGS) if (state.settings[key] !== defaultRunSettings[key]) params.set(key, String(state.settings[key]));
   const hash = params.toString();
   if (hash !== location.hash.replace(/^#/, '')) history.replaceState(null, '', hash ? `#${hash}` : location.pathname + location.search);
 }

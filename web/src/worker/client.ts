@@ -12,6 +12,7 @@
  * at its next step; when it has not answered within CANCEL_GRACE_MS (a step that takes long, such as
  * opening the geodesic solver, or hangs), the worker is replaced the same way, without counting as a crash.
  */
+import type { RunSettings } from '../../../lib/core/options.ts';
 import type { Options, Refinement } from '../../../lib/core/types.ts';
 import {
   type DecimatedReply,
@@ -98,12 +99,14 @@ export class GeometryClient {
   private dead = false;
 
   /**
-   * `memoryLimitMB` caps the WASM core's memory (a test hook, from the page's `?memoryLimitMB=`; the
-   * worker reads it from its name, which is all a module worker gets before its first message).
+   * Test hooks, from the page's address (`?memoryLimitMB=`, `?separatorCrash=`): `memoryLimitMB` caps
+   * the WASM cores' memory; `separatorCrash` makes the worker's first separator worker abort on that
+   * request (1: its first). The worker reads them from its name, which is all a module worker gets
+   * before its first message.
    */
   constructor(
     private readonly hooks: ClientHooks = {},
-    private readonly memoryLimitMB: number | null = null,
+    private readonly testHooks: { memoryLimitMB?: number | null; separatorCrash?: number | null } = {},
   ) {
     this.worker = this.spawn();
   }
@@ -136,13 +139,14 @@ export class GeometryClient {
   }
 
   /**
-   * The whole pipeline on the open mesh with options differing from the defaults; `onNews` gets the
-   * progress (sources done / total and the new loops) after every step.
+   * The whole pipeline on the open mesh with options differing from the defaults, stage 1 on
+   * `workers` threads; `onNews` gets the progress (sources done / total and the new loops) after
+   * every step.
    */
-  skeleton(options: Partial<Options>, onNews?: (news: PipelineNews, event: ProgressEvent) => void): SkeletonJob {
+  skeleton(options: Partial<Options>, workers: RunSettings['workers'], onNews?: (news: PipelineNews, event: ProgressEvent) => void): SkeletonJob {
     const id = this.nextId;
     if (onNews) this.news.set(id, onNews);
-    const job = this.job({ type: 'skeleton', options });
+    const job = this.job({ type: 'skeleton', options, workers });
     return { result: job.result.finally(() => this.news.delete(id)), cancel: job.cancel };
   }
 
@@ -200,7 +204,8 @@ export class GeometryClient {
   }
 
   private spawn(): Worker {
-    const name = this.memoryLimitMB ? `cscd-geometry memoryLimitMB=${this.memoryLimitMB}` : 'cscd-geometry';
+    const { memoryLimitMB, separatorCrash } = this.testHooks;
+    const name = ['cscd-geometry', memoryLimitMB && `memoryLimitMB=${memoryLimitMB}`, separatorCrash && `separatorCrash=${separatorCrash}`].filter(Boolean).join(' ');
     const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name });
     worker.onmessage = (event: MessageEvent<WorkerMessage>) => this.receive(event.data);
     worker.onerror = (event: ErrorEvent) => {

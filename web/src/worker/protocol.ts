@@ -5,6 +5,7 @@
  * or an `error` with the same id, and may send `progress` events for it before that. Large arrays
  * travel in transfer lists in both directions (see `transferables`).
  */
+import type { RunSettings } from '../../../lib/core/options.ts';
 import type { Evaluation, MeshFacts, Options, Refinement, Separator, Skeleton } from '../../../lib/core/types.ts';
 import type { SkeletonFormat } from '../../../lib/io/skeleton.ts';
 import type { MeshFormat } from '../../../lib/io/types.ts';
@@ -48,14 +49,17 @@ export interface CrashRequest {
 
 /**
  * The whole CSCD-M pipeline (stage 1 from N sources, then stage 2) on the open mesh. The worker runs
- * it a few sources at a time, sends a `progress` event with `pipeline` news after every step and
- * answers with a `skeleton` reply, or an `error` of kind `cancelled` after a `cancel`.
+ * it a few sources at a time, or a round at a time on a pool of separator workers (page-pool.ts),
+ * sends a `progress` event with `pipeline` news after every step and answers with a `skeleton`
+ * reply, or an `error` of kind `cancelled` after a `cancel`.
  */
 export interface SkeletonRequest {
   type: 'skeleton';
   id: number;
   /** Options that differ from `defaultOptions` (n, seed, pruneLengthFactor, and the stage-1 ones). */
   options: Partial<Options>;
+  /** Threads of stage 1, this worker included, or auto (lib/core/pool-size.ts); not an option: the skeleton is the same for any. */
+  workers: RunSettings['workers'];
 }
 
 /** The reconstruction error (paper Sec. 5) of the last skeleton the worker computed on the open mesh. */
@@ -203,13 +207,29 @@ export interface SkeletonData extends Omit<Skeleton, 'nodes' | 'radii' | 'candid
   candidates: Omit<Skeleton['candidates'], 'loops'> & { loops: Float32Array[] };
 }
 
+/** What stage 1 ran on. */
+export interface PoolReport {
+  /** Separator workers at the start (1 also when the geometry worker computed alone, without a pool). */
+  workers: number;
+  /** `workers` auto chose fewer than the cores allow, for want of memory. */
+  memoryCapped: boolean;
+  /** Separator workers that could not start or were lost, one sentence each. */
+  notices: string[];
+  /** Wall time to have the separator workers ready (0: none, or kept from the last run). */
+  openMs: number;
+}
+
 export interface SkeletonReply {
   type: 'skeleton';
   id: number;
   skeleton: SkeletonData;
   /** The options the run used (defaults filled in). */
   options: Options;
-  /** Wall times in the worker: all steps of stage 1, stage 2 (`finish`), and the sizes of the steps. */
+  pool: PoolReport;
+  /**
+   * Wall times in the worker: stage 1 (alone: its steps summed; on a pool: from the first round to
+   * the last), stage 2 (`finish`), and the number of steps or rounds.
+   */
   timings: { stage1Ms: number; stage2Ms: number; steps: number };
 }
 
@@ -261,6 +281,8 @@ export interface PipelineNews {
   newLoops: Float32Array[];
   /** Per new loop: 1 closed, 0 an open path ending on the mesh boundary. */
   newClosed: Uint8Array;
+  /** What happened to the pool so far (PoolReport.notices). */
+  notices: string[];
 }
 
 /** Intermediate news about a request; `fraction` in [0, 1] when the stage can measure itself. */

@@ -5,8 +5,22 @@
  * costly part on a large mesh) is opened by the first request that needs it.
  */
 import { createCore } from '../../../lib/core/index.ts';
-import { defaultOptions } from '../../../lib/core/options.ts';
-import { CoreError, type Core, type MeshArrays, type MeshFacts, type Options, type Pipeline, type Refinement, type Separator, type Skeleton, type Surface } from '../../../lib/core/types.ts';
+import { AUTO_N, defaultOptions, OPTIONS } from '../../../lib/core/options.ts';
+import { runStage1 } from '../../../lib/core/pool.ts';
+import { poolSize } from '../../../lib/core/pool-size.ts';
+import {
+  CoreError,
+  type Core,
+  type MeshArrays,
+  type MeshFacts,
+  type Options,
+  type Pipeline,
+  type PipelineProgress,
+  type Refinement,
+  type Separator,
+  type Skeleton,
+  type Surface,
+} from '../../../lib/core/types.ts';
 import { parseMesh } from '../../../lib/io/index.ts';
 import { repairMesh } from '../../../lib/io/repair.ts';
 import { writeLoopsObj } from '../../../lib/io/loops.ts';
@@ -14,8 +28,10 @@ import { SKELETON_WRITERS } from '../../../lib/io/skeleton.ts';
 import { Decimator } from '../../../lib/mesh/decimate.ts';
 import { refine, refinementOf, skeletonForInput } from '../../../lib/mesh/refine.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
+import { PagePool, type WebSeparatorWorker } from './page-pool.ts';
 import {
   transferables,
+  type PoolReport,
   type DecimateRequest,
   type ErrorKind,
   type EvaluateRequest,
@@ -33,16 +49,20 @@ import {
 
 declare const self: DedicatedWorkerGlobalScope;
 
-/** The page may cap the core's memory (test hook, see client.ts): it comes in the worker's name. */
+/** Test hooks of the page (see client.ts), in the worker's name: a cap on the cores' memory, and the
+ * request on which the first separator worker aborts. */
 const memoryLimitMB = Number(/memoryLimitMB=(\d+)/.exec(self.name)?.[1]) || undefined;
+const separatorCrash = Number(/separatorCrash=(\d+)/.exec(self.name)?.[1]) || undefined;
 
-/** Started at once so the download and compilation overlap with the page's first file read. */
-const corePromise: Promise<Core> = fetch(wasmUrl)
+/** Started at once so the download and compilation overlap with the page's first file read; compiled
+ * once, for this worker's core and the separator workers' (page-pool.ts). */
+const modulePromise: Promise<WebAssembly.Module> = fetch(wasmUrl)
   .then((response) => {
     if (!response.ok) throw new Error(`HTTP ${response.status} for ${wasmUrl}`);
     return response.arrayBuffer();
   })
-  .then((bytes) => createCore(bytes, { memoryLimitMB }));
+  .then((bytes) => WebAssembly.compile(bytes));
+const corePromise: Promise<Core> = modulePromise.then((module) => createCore(module, { memoryLimitMB }));
 corePromise.catch(() => {}); // reported when a request needs the core
 
 interface OpenMesh {
@@ -163,6 +183,8 @@ async function accept(
   const computedOn = mesh === input ? facts : core.inspect(mesh);
   const inspectMs = performance.now() - t;
   current?.surface?.dispose();
+  pool?.dispose();
+  pool = null;
   current = { mesh, facts: computedOn, refined, surface: null, surfaceError: null, lastSource: null, lastSkeleton: null };
   if (!facts.manifold || !facts.consistentlyOriented) {
     try {
@@ -307,42 +329,125 @@ function skeletonToWire(s: Skeleton): SkeletonData {
   };
 }
 
+/** Tells the page how far stage 1 is, with the loops the step or round found. */
+function postSources(id: number, p: PipelineProgress, notices: readonly string[]): void {
+  const newLoops = p.newLoops.map(f32);
+  const { newClosed } = p;
+  post(
+    {
+      type: 'progress',
+      id,
+      stage: 'sources',
+      message: [`stage 1: ${p.done} / ${p.total} sources`, ...notices].join('; '),
+      fraction: p.total > 0 ? p.done / p.total : undefined,
+      pipeline: { done: p.done, total: p.total, finished: p.finished, newLoops, newClosed, notices: [...notices] },
+    },
+    transferables(...newLoops, newClosed),
+  );
+}
+
+/** The separator workers of the open mesh and the options of the last run that used them. */
+let pool: PagePool | null = null;
+
+/** The options in their declared order: two runs share a pool when these are the same. */
+const optionsKey = (options: Options) => JSON.stringify(OPTIONS.map((o) => options[o.key]));
+
+let separatorWorkersStarted = 0;
+/**
+ * The pool (started on `mesh` with `options` when there is none) and its `count` workers getting
+ * ready; the first separator worker this geometry worker ever starts carries the page's crash hook.
+ */
+function poolFor(mesh: OpenMesh, options: Options, module: WebAssembly.Module, count: number) {
+  if (!pool) {
+    pool = new PagePool(mesh, optionsKey(options), () => ({
+      wasm: module,
+      mesh: mesh.mesh,
+      refine: false, // mesh.mesh is what this worker's surface opened: refined already
+      options,
+      memoryLimitMB,
+      crashOnRequest: ++separatorWorkersStarted === 1 ? separatorCrash : undefined,
+    }));
+  }
+  return { pool, opening: pool.ready(count) };
+}
+
+/** Why a separator worker was lost, for the page. */
+function lostNotice(error: unknown, left: number): string {
+  const what = error instanceof CoreError && error.kind === 'memory' ? 'ran out of memory' : 'crashed';
+  const message = error instanceof Error ? error.message : String(error);
+  return `a separator worker ${what} (${message}): continuing on ${left > 0 ? `${left} worker${left === 1 ? '' : 's'}` : 'the geometry worker alone'}`;
+}
+
 async function skeleton(request: SkeletonRequest): Promise<void> {
   const { id } = request;
   const check = () => checkCancelled(id);
   check();
-  const { mesh, surface } = await withSurface(id, 'The skeleton is not available on this mesh');
   const options: Options = { ...defaultOptions, ...request.options };
+  const open = current;
+  if (pool && (pool.owner !== open || pool.optionsKey !== optionsKey(options))) {
+    pool.dispose();
+    pool = null;
+  }
+  const size = open && !open.surfaceError
+    ? poolSize({
+        workers: request.workers,
+        cores: navigator.hardwareConcurrency || 1,
+        memoryGB: (navigator as WorkerNavigator & { deviceMemory?: number }).deviceMemory ?? null,
+        vertices: open.mesh.positions.length / 3,
+        roundSize: options.roundSize,
+        sourcesLeft: options.n === 'auto' ? AUTO_N.max : options.n,
+      })
+    : { workers: 1, memoryCapped: false };
+  // The separator workers open the mesh while this worker opens its solver.
+  const t0 = performance.now();
+  const starting = open && size.workers > 1 ? poolFor(open, options, await modulePromise, size.workers) : null;
+  const { mesh, surface } = await withSurface(id, 'The skeleton is not available on this mesh');
+  const started = starting ? await starting.opening : { workers: [], failures: [] };
+  const report: PoolReport = {
+    workers: Math.max(1, started.workers.length),
+    memoryCapped: size.memoryCapped,
+    notices: started.failures.map((f) => `a separator worker could not start (${f})`),
+    openMs: starting ? performance.now() - t0 : 0,
+  };
   progress(id, 'sources', 'stage 1: starting…');
   let pipeline: Pipeline | null = surface.pipeline(options);
+  let running = true;
+  let finished = false;
   try {
-    let k = 1;
     let steps = 0;
     let stage1Ms = 0;
-    for (;;) {
-      await yieldToEvents();
-      check();
+    if (started.workers.length > 0) {
       const t = performance.now();
-      const p = pipeline.step(k);
-      const ms = performance.now() - t;
-      stage1Ms += ms;
-      steps++;
-      const newLoops = p.newLoops.map(f32);
-      const { newClosed } = p;
-      post(
-        {
-          type: 'progress',
-          id,
-          stage: 'sources',
-          message: `stage 1: ${p.done} / ${p.total} sources`,
-          fraction: p.total > 0 ? p.done / p.total : undefined,
-          pipeline: { done: p.done, total: p.total, finished: p.finished, newLoops, newClosed },
+      let left = report.workers;
+      await runStage1(pipeline, started.workers, {
+        check,
+        progress: (p) => {
+          steps++;
+          postSources(id, p, report.notices);
         },
-        transferables(...newLoops, newClosed),
-      );
-      if (p.finished || (p.total > 0 && p.done >= p.total)) break;
-      k = nextStepSize(k, ms);
+        lost: (worker, error) => {
+          if (!running) return; // stopped by the end of the run, not lost
+          starting!.pool.drop(worker as WebSeparatorWorker);
+          report.notices.push(lostNotice(error, --left));
+        },
+      });
+      stage1Ms = performance.now() - t;
+    } else {
+      let k = 1;
+      for (;;) {
+        await yieldToEvents();
+        check();
+        const t = performance.now();
+        const p = pipeline.step(k);
+        const ms = performance.now() - t;
+        stage1Ms += ms;
+        steps++;
+        postSources(id, p, report.notices);
+        if (p.finished || (p.total > 0 && p.done >= p.total)) break;
+        k = nextStepSize(k, ms);
+      }
     }
+    running = false;
     await yieldToEvents();
     check();
     progress(id, 'stage2', 'stage 2: pruning, packing, regions, skeleton…');
@@ -353,10 +458,17 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
     const data = skeletonToWire(result);
     const c = data.candidates;
     post(
-      { type: 'skeleton', id, skeleton: data, options, timings: { stage1Ms, stage2Ms, steps } },
+      { type: 'skeleton', id, skeleton: data, options, pool: report, timings: { stage1Ms, stage2Ms, steps } },
       transferables(data.nodes, data.radii, data.edges, data.vertexToNode, data.packed, c.sources, c.scores, ...c.loops),
     );
+    finished = true;
   } finally {
+    running = false;
+    // A run stopped part way (a cancel) stops every separator worker: none goes on computing its sources.
+    if (!finished && starting) {
+      starting.pool.dispose();
+      if (pool === starting.pool) pool = null;
+    }
     pipeline.dispose();
     pipeline = null;
   }

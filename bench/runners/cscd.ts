@@ -5,8 +5,9 @@
 //   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --round-size R]
 //
 // Writes the skeleton as our JSON and prints, as the last line of stdout, {"seconds": S, "stage1Seconds": T,
-// "memoryMB": M} (M: this thread's core at the end, its peak; it ran stage 1 beside the pool's threads and
-// stage 2, so no pool thread's core needs more):
+// "serialSeconds": D, "memoryMB": M} (D: on a pool, this thread's drawing and accepting of rounds; M: this
+// thread's core at the end, its peak; it held every candidate and ran stage 2, so no pool thread's core
+// needs more):
 // the wall time of openRefinedSurface (refining a coarse mesh, as the CLI does, and the per-mesh geodesic
 // solver) and skeleton, i.e. from the parsed mesh to the skeleton (reading the file, loading the WASM and
 // writing excluded), and of stage 1 alone. With --workers K > 1 stage 1 runs on a pool of K threads
@@ -42,12 +43,30 @@ const surface = core.openRefinedSurface(mesh);
 const pool = await opening;
 let skeleton;
 let stage1Seconds = 0;
+/** On a pool: the time this thread spent drawing and accepting rounds, while the workers waited (Amdahl's serial part). */
+let serialSeconds = 0;
+const timed = <T extends object>(target: T, names: readonly string[]): T =>
+  new Proxy(target, {
+    get(object, name, receiver) {
+      const value = Reflect.get(object, name, receiver) as unknown;
+      if (typeof value !== 'function') return value;
+      if (!names.includes(String(name))) return value.bind(object);
+      return (...args: unknown[]) => {
+        const t = performance.now();
+        try {
+          return value.apply(object, args);
+        } finally {
+          serialSeconds += (performance.now() - t) / 1000;
+        }
+      };
+    },
+  });
 try {
   const threads = pool?.workers ?? [];
   const pipeline = surface.pipeline(options);
   try {
     const stage1 = performance.now();
-    await runStage1(pipeline, threads);
+    await runStage1(threads.length ? timed(pipeline, ['drawRound', 'accept']) : pipeline, threads);
     stage1Seconds = (performance.now() - stage1) / 1000;
     skeleton = pipeline.finish();
   } finally {
@@ -60,4 +79,4 @@ try {
 const seconds = (performance.now() - started) / 1000;
 
 await writeFile(outPath, writeSkeletonJson(skeleton, { mesh: meshPath, options }));
-process.stdout.write(`${JSON.stringify({ seconds, stage1Seconds, memoryMB: core.memoryMB() })}\n`);
+process.stdout.write(`${JSON.stringify({ seconds, stage1Seconds, serialSeconds, memoryMB: core.memoryMB() })}\n`);

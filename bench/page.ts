@@ -20,6 +20,7 @@ import { chromium } from '@playwright/test';
 import { defaultOptions, OPTIONS, optionProblem, parseSettingText, WORKERS } from '../lib/core/options.ts';
 import { parseMesh } from '../lib/io/index.ts';
 import { median } from './metrics.ts';
+import { claimResultName } from './result-name.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const { positionals, values } = parseArgs({
@@ -137,6 +138,7 @@ const lines = [
   '',
 ];
 const date = new Date().toISOString().slice(0, 10);
-const out = path.join(repoRoot, 'bench', 'results', `${date}-page${workers > 1 ? `-k${workers}` : ''}.md`);
+const resultsDir = path.join(repoRoot, 'bench', 'results');
+const out = path.join(resultsDir, `${claimResultName(resultsDir, `${date}-page${workers > 1 ? `-k${workers}` : ''}`, ['md'])}.md`);
 writeFileSync(out, lines.join('\n'));
 process.stdout.write(`${lines.join('\n')}\nwrote ${path.relative(repoRoot, out)}\n`);

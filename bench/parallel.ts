@@ -1,10 +1,10 @@
-// Stage 1 on one and on two threads (issue: all cores): CSCD on each mesh with `--round-size R`, once
-// with one thread and once with K, each in a process of its own (bench/runners/cscd.ts), the order of
-// the two alternating from mesh to mesh so that drift of the machine affects both alike. Reports the
-// times, their ratio and whether the two skeletons are the same (they must be), as a table in
-// bench/results/<date>-parallel.md.
+// Stage 1 on one thread and on K worker threads (issue: all cores): CSCD on each mesh with
+// `--round-size R`, once alone and once on a pool of K, each in a process of its own
+// (bench/runners/cscd.ts), the order of the two alternating from mesh to mesh so that drift of the
+// machine affects both alike. Reports the times, their ratio, the serial part and whether the two
+// skeletons are the same (they must be), as a table in bench/results/<date>-parallel.md.
 //
-//   node --import tsx bench/parallel.ts [--round-size 8] [--workers 2] [--min-vertices 10000] [meshes...]
+//   npm run bench:parallel -- [--round-size 8] [--workers 2] [--min-vertices 10000] [meshes...]
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
@@ -13,6 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { parseMesh } from '../lib/io/index.ts';
 import { median } from './metrics.ts';
+import { claimResultName } from './result-name.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const { positionals, values } = parseArgs({
@@ -89,6 +90,7 @@ const table = [
   `Serial %: the time the pool's caller spent drawing and accepting rounds (the workers idle), over stage 1 on one thread. Karp-Flatt %: the serial fraction e = (1/S − 1/K) / (1 − 1/K) that explains the measured speedup S on K = ${workers}, which also counts the ends of rounds, when a worker waits for the round's slowest separator. Projected stage-1 speedup (Amdahl, the medians ${(100 * serial).toFixed(1)}% and ${(100 * measured).toFixed(1)}%; never more threads than a round has sources, ${roundSize}): ${projection(8)}; ${projection(16)}.`,
   '',
 ].join('\n');
-const out = path.join(repoRoot, 'bench', 'results', `${date}-parallel.md`);
+const resultsDir = path.join(repoRoot, 'bench', 'results');
+const out = path.join(resultsDir, `${claimResultName(resultsDir, `${date}-parallel`, ['md'])}.md`);
 writeFileSync(out, table);
 process.stdout.write(`wrote ${path.relative(repoRoot, out)}\n`);

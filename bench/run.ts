@@ -24,6 +24,7 @@ import {
   compareErrors, leafIndices, mapByPosition, median, tipGap, VertexMapError, vertexMapRadii, type Comparison, type TipGap,
 } from './metrics.ts';
 import { errorVsSecondsSvg } from './plot.ts';
+import { claimResultName } from './result-name.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
@@ -458,24 +459,9 @@ function csv(rows: Row[]): string {
   return `${lines.join('\n')}\n`;
 }
 
-/**
- * bench/results/<date>[-quick], then -2, -3... until no file of the run's three exists; the name is
- * claimed at once by creating its .md (exclusively), so that two runs started together (one per core)
- * do not write to the same files.
- */
+/** bench/results/<date>[-quick], or the first of -2, -3... that no earlier run has written. */
 function runName(quick: boolean): string {
-  const base = `${new Date().toISOString().slice(0, 10)}${quick ? '-quick' : ''}`;
-  const taken = (name: string) => ['md', 'csv', 'svg'].some((ext) => existsSync(path.join(resultsDir, `${name}.${ext}`)));
-  for (let k = 1; ; k++) {
-    const name = k === 1 ? base : `${base}-${k}`;
-    if (taken(name)) continue;
-    try {
-      writeFileSync(path.join(resultsDir, `${name}.md`), '', { flag: 'wx' });
-      return name;
-    } catch (error) {
-      if ((error as NodeJS.ErrnoException).code !== 'EEXIST') throw error;
-    }
-  }
+  return claimResultName(resultsDir, `${new Date().toISOString().slice(0, 10)}${quick ? '-quick' : ''}`, ['md', 'csv', 'svg']);
 }
 
 function shell(command: string, args: string[]): string {

@@ -54,14 +54,21 @@ declare const self: DedicatedWorkerGlobalScope;
 const memoryLimitMB = Number(/memoryLimitMB=(\d+)/.exec(self.name)?.[1]) || undefined;
 const separatorCrash = Number(/separatorCrash=(\d+)/.exec(self.name)?.[1]) || undefined;
 
+/**
+ * The core compiled while it downloads, and on a later visit taken from the browser's code cache, which
+ * keeps only what was compiled from a stream; a server that does not say application/wasm gets the
+ * plain compile.
+ */
+async function compileCore(): Promise<WebAssembly.Module> {
+  const response = await fetch(wasmUrl);
+  if (!response.ok) throw new Error(`HTTP ${response.status} for ${wasmUrl}`);
+  if (response.headers.get('Content-Type')?.startsWith('application/wasm')) return WebAssembly.compileStreaming(response);
+  return WebAssembly.compile(await response.arrayBuffer());
+}
+
 /** Started at once so the download and compilation overlap with the page's first file read; compiled
  * once, for this worker's core and the separator workers' (page-pool.ts). */
-const modulePromise: Promise<WebAssembly.Module> = fetch(wasmUrl)
-  .then((response) => {
-    if (!response.ok) throw new Error(`HTTP ${response.status} for ${wasmUrl}`);
-    return response.arrayBuffer();
-  })
-  .then((bytes) => WebAssembly.compile(bytes));
+const modulePromise: Promise<WebAssembly.Module> = compileCore();
 const corePromise: Promise<Core> = modulePromise.then((module) => createCore(module, { memoryLimitMB }));
 corePromise.catch(() => {}); // reported when a request needs the core
 

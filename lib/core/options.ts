@@ -88,7 +88,7 @@ export const OPTIONS: readonly OptionSpec[] = Object.freeze([
  * the core nor the skeleton's JSON, so the same options give the same file whatever they are.
  */
 export interface RunSettings {
-  /** Threads of stage 1 in all, the caller's included, or auto (poolSize, lib/core/pool-size.ts). */
+  /** Threads that compute stage 1 (beyond 1, the caller's only draws and accepts), or auto (poolSize, lib/core/pool-size.ts). */
   workers: number | 'auto';
 }
 

@@ -4,8 +4,8 @@
 //
 // The pipeline's own thread only draws and accepts: were it to compute sources too, it could not hand a
 // worker its next one while it computes, so each worker would need a second source queued, and at the
-// end of a round a worker would still hold one that the idle pipeline thread could have done (measured:
-// stage 1 on two threads 1.53x one thread over 15 meshes, docs/parallel.md).
+// end of a round a worker would still hold one that the idle pipeline thread could have done (stage 1
+// on two threads against one, 15 meshes: 1.53x that way, 1.72x this way; docs/parallel.md).
 import type { CandidateRecord, Pipeline, PipelineProgress } from './types.ts';
 
 /** Another pipeline on the same mesh and options, elsewhere (a worker thread, a Web Worker). */

@@ -56,20 +56,19 @@ function startWorker(start: PoolStart): Promise<WebSeparatorWorker> {
 
 export class PagePool {
   private workers: WebSeparatorWorker[] = [];
-  private started = 0;
 
-  /** `start(i)`: what the pool's i-th worker (from 0, replacements counted) is started with. */
+  /** `start()`: what the next worker (a replacement too) is started with. */
   constructor(
     readonly owner: object,
     readonly optionsKey: string,
-    private readonly start: (index: number) => PoolStart,
+    private readonly start: () => PoolStart,
   ) {}
 
   /** Up to `count` ready workers, started as needed; `failures` says why any could not start. */
   async ready(count: number): Promise<{ workers: WebSeparatorWorker[]; failures: string[] }> {
     for (const worker of this.workers.filter((w) => w.failed)) this.drop(worker);
     const missing = Math.max(0, count - this.workers.length);
-    const results = await Promise.allSettled(Array.from({ length: missing }, () => startWorker(this.start(this.started++))));
+    const results = await Promise.allSettled(Array.from({ length: missing }, () => startWorker(this.start())));
     const failures: string[] = [];
     for (const result of results) {
       if (result.status === 'fulfilled') this.workers.push(result.value);

@@ -58,7 +58,7 @@ export interface SkeletonRequest {
   id: number;
   /** Options that differ from `defaultOptions` (n, seed, pruneLengthFactor, and the stage-1 ones). */
   options: Partial<Options>;
-  /** Threads of stage 1, this worker included, or auto (lib/core/pool-size.ts); not an option: the skeleton is the same for any. */
+  /** Separator workers that compute stage 1 (1: this worker alone), or auto (lib/core/pool-size.ts); not an option: the skeleton is the same for any. */
   workers: RunSettings['workers'];
 }
 

@@ -170,7 +170,7 @@ export interface Skeleton {
     scores: Float64Array;
     fates: CandidateFate[];
   };
-  /** The packed separators' indices into candidates; separator i owns region (node) i. */
+  /** The packed separators' indices into candidates, in the order of their regions (stage 2 cuts a region into band nodes, so node numbers are not region numbers). */
   packed: Uint32Array;
   stats: {
     /** Sources tried (N; the one chosen in auto mode). */

@@ -186,6 +186,51 @@ void compactVertexMap(std::vector<uint32_t>& nodeOfElement, const SkeletonGraph&
     if (nodeOfElement[orphans[k]] == kNone) nodeOfElement[orphans[k]] = moved[k];
 }
 
+// A leaf that owns no element after the vertex map stands for no part of the shape: every element
+// lies nearer another node. It is the end of a hook (tree_coarse, rounds of 8: a packed loop hugging
+// a tip left its region node 1.2% of the diagonal back from the tip, beside the chain that reaches
+// it) and is dropped, and so is the leaf that leaves behind when it owns nothing either. Nodes keep
+// their order; the vertex map is renumbered.
+void dropEmptyLeaves(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement) {
+  const size_t nodeCount = graph.nodes.size();
+  std::vector<size_t> owned(nodeCount, 0);
+  for (uint32_t node : nodeOfElement) owned[node]++;
+  std::vector<std::set<uint32_t>> adj(nodeCount);
+  for (const auto& [a, b] : graph.edges) {
+    adj[a].insert(uint32_t(b));
+    adj[b].insert(uint32_t(a));
+  }
+  std::vector<char> dropped(nodeCount, 0);
+  std::vector<uint32_t> pending;
+  for (uint32_t node = 0; node < nodeCount; node++)
+    if (owned[node] == 0 && adj[node].size() == 1) pending.push_back(node);
+  bool any = false;
+  while (!pending.empty()) {
+    const uint32_t leaf = pending.back();
+    pending.pop_back();
+    if (dropped[leaf] || adj[leaf].size() != 1) continue;
+    const uint32_t next = *adj[leaf].begin();
+    adj[next].erase(leaf);
+    adj[leaf].clear();
+    dropped[leaf] = any = true;
+    if (owned[next] == 0 && adj[next].size() == 1) pending.push_back(next);
+  }
+  if (!any) return;
+  std::vector<uint32_t> index(nodeCount, kNone);
+  std::vector<Vector3> kept;
+  for (uint32_t node = 0; node < nodeCount; node++)
+    if (!dropped[node]) {
+      index[node] = uint32_t(kept.size());
+      kept.push_back(graph.nodes[node]);
+    }
+  graph.nodes = std::move(kept);
+  graph.edges.clear();
+  for (uint32_t a = 0; a < nodeCount; a++)
+    for (uint32_t b : adj[a])
+      if (a < b) graph.edges.push_back({index[a], index[b]});
+  for (uint32_t& node : nodeOfElement) node = index[node];
+}
+
 // Each node of a solid part moves to the centre of the sphere that best fits its elements (least
 // squares of their distances to it: Landau's fixed-point iteration, from where the node is). A band
 // piece's slice centroid lies off the axis wherever the piece is not a round cross-section (a bend, a
@@ -476,17 +521,22 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
     for (uint32_t leaf = 0; leaf < nodeCount; leaf++) {
       if (mergedInto[leaf] != kNone || isHub(leaf) || adj[leaf].size() != 1) continue;
       const uint32_t next = *adj[leaf].begin();
-      if (leaf < regions.count) {
-        if (weightOf(leaf) < kIslandStrip * width[leaf] * spacing) changed = absorb(next, leaf) || changed;
-        continue;
-      }
-      const double bandWidth = width[pieces.list[piecesOf[leaf][0]].region];
-      const bool outside = solid[pieces.list[piecesOf[leaf][0]].region] && !inside(position[leaf]);
-      if (outside || touchesOther(leaf, next)) {
+      const bool regionNode = leaf < regions.count;
+      if (regionNode && weightOf(leaf) < kIslandStrip * width[leaf] * spacing) {
         changed = absorb(next, leaf) || changed;
         continue;
       }
-      if (!isHub(next)) {
+      const bool outside = !regionNode && solid[pieces.list[piecesOf[leaf][0]].region] && !inside(position[leaf]);
+      if (outside || (!regionNode && touchesOther(leaf, next))) {
+        changed = absorb(next, leaf) || changed;
+        continue;
+      }
+      // A region node is an end cap too when its neighbour is a band of its own region, which then
+      // reaches past it (star8_coarse, rounds of 8: a loop tilted across a curling arm left its region
+      // node a stub beside the band node that holds the tip). Next to another region's node it is the
+      // end of a tube, which stays (the hand cut open at the wrist: two loops near the rim).
+      const bool ownBand = next >= oldNodes && pieces.list[piecesOf[next][0]].region == leaf;
+      if (!isHub(next) && (!regionNode || ownBand)) {
         double reach = 0;
         for (uint32_t p : piecesOf[leaf])
           for (uint32_t v : pieces.list[p].elements) reach = std::max(reach, norm(samples.positions[v] - position[next]));
@@ -495,6 +545,8 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
           continue;
         }
       }
+      if (regionNode) continue;
+      const double bandWidth = width[pieces.list[piecesOf[leaf][0]].region];
       std::vector<uint32_t> chain{leaf};
       uint32_t previous = leaf, at = next;
       while (!isHub(at) && at >= regions.count && adj[at].size() == 2) {
@@ -567,11 +619,13 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   std::vector<uint32_t> nodeOfElement(count);
   for (size_t v = 0; v < count; v++) nodeOfElement[v] = index[resolve(nodeOf[pieces.of[v]])];
   compactVertexMap(nodeOfElement, graph, samples);
+  dropEmptyLeaves(graph, nodeOfElement);
   // Centred nodes own other elements than before, whose sphere is centred again: twice (a third and
   // fourth round drifted, and lost as many meshes as they won).
   for (int round = 0; round < kFitRounds; round++) {
     centreOnElements(graph, nodeOfElement, samples, [&](uint32_t v) { return bool(solid[label[v]]); }, inside);
     compactVertexMap(nodeOfElement, graph, samples);
+    dropEmptyLeaves(graph, nodeOfElement);
   }
   graph.weights.assign(graph.nodes.size(), 0);
   for (size_t v = 0; v < count; v++) graph.weights[nodeOfElement[v]] += samples.weights[v];

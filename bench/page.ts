@@ -6,7 +6,7 @@
 // stage 1 as each measures it (the page: the sum of the worker's `pipeline.step` calls, without
 // messages or drawing; Node: from the first step to the last), the ratio of their medians and whether
 // both drew the same number of sources, as a table in bench/results/<date>-page.md. With --workers K
-// (and --round-size R: with the default 1 a round has nothing to share) both run stage 1 on K threads:
+// (and --round-size R, 8 by default: at 1 a round has nothing to share) both run stage 1 on K threads:
 // the page's workers setting, in its address, and the Node runner's pool.
 //
 //   node --import tsx bench/page.ts [--repeats 3] [--port 4180] [--no-build] [--workers K] [--round-size R] [meshes...]

@@ -78,7 +78,7 @@ export const OPTIONS: readonly OptionSpec[] = Object.freeze([
     help: 'loops shorter than this many mean edge lengths enclose no feature and are pruned (paper Sec. 4.2.2)',
   },
   {
-    key: 'roundSize', flag: 'round-size', stage: 'skeleton', commands: 'skeleton', kind: 'integer', default: 1, range: [1, 256], placeholder: 'K',
+    key: 'roundSize', flag: 'round-size', stage: 'skeleton', commands: 'skeleton', kind: 'integer', default: 8, range: [1, 256], placeholder: 'K',
     help: 'sources drawn at once in stage 1, their separators computed together (in parallel by workers): the skeleton depends on it, not on the number of workers',
   },
 ] satisfies OptionSpec[]);

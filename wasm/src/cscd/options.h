@@ -20,10 +20,10 @@ struct Options {
   double laplacianThreshold = 0.2;           // cut locus: min -(mean edge length) x Laplacian of the distance
   int pruneDepth = 3;                        // cut locus: leaf branches shorter than this (edges) are pruned
   int n = 0;                                 // sources to sample; 0 = auto (until coverage stops growing)
-  // Sources drawn at once, their separators computed together (by a pool of workers). 1 until rounds
-  // keep the skeleton's quality: at 2, 4 and 8, star8_coarse missed 4-5 of 32 arm tips over four seeds
-  // (1% of the diagonal), at 1 none (docs/parallel.md).
-  int roundSize = 1;
+  // Sources drawn at once, their separators computed together (by a pool of workers): 8 lets eight
+  // cores share every round, and with stage 2 keeping leaves at the tips the skeletons are as good as
+  // one at a time (docs/parallel.md, "Choosing roundSize").
+  int roundSize = 8;
   double pruneLengthFactor = 3;              // loops shorter than this many mean edge lengths are pruned
 };
 

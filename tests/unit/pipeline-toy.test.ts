@@ -142,10 +142,10 @@ describe('the generic pipeline on a toy realization', () => {
     }
   });
 
-  it('reports stage 1 as it goes, in whole rounds, and gives the same skeleton whatever the steps', () => {
+  it('reports stage 1 source by source and its loops by whole rounds, and gives the same skeleton whatever the steps', () => {
     const { progress, skeleton } = run('star', { n: 20, seed: 4, roundSize: 4 }, [5, 6, 10]);
-    expect(progress.map((p) => [p.done, p.total, p.finished])).toEqual([[8, 20, false], [16, 20, false], [20, 20, true]]);
-    expect(progress.map((p) => p.newLoops.length)).toEqual([8, 8, 4]);
+    expect(progress.map((p) => [p.done, p.total, p.finished])).toEqual([[5, 20, false], [11, 20, false], [20, 20, true]]);
+    expect(progress.map((p) => p.newLoops.length)).toEqual([4, 4, 12]);
     expect(progress.flatMap((p) => p.newLoops.map((l) => l.length))).toEqual(skeleton.candidates.loops.map((l) => l.length));
     const whole = run('star', { n: 20, seed: 4, roundSize: 4 }).skeleton;
     skeleton.stats.timings = whole.stats.timings = {};

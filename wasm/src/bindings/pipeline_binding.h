@@ -173,15 +173,17 @@ public:
   }
 
 private:
-  // Progress, with the loops taken since the last report (for display).
+  // Progress, with the loops taken since the last report (for display): those of accepted rounds
+  // only, since a round under way may still be cut short by the auto stop.
   val progressRecord(const Progress& progress) {
     val newLoops = val::array();
     std::vector<uint8_t> newClosed;
-    for (size_t i = loopsReported; i < progress.done; i++) {
-      newLoops.call<void>("push", toFloat64Array(pipeline->candidates()[i].loop));
-      newClosed.push_back(pipeline->candidates()[i].closed);
+    const auto& taken = pipeline->candidates();
+    for (size_t i = loopsReported; i < taken.size(); i++) {
+      newLoops.call<void>("push", toFloat64Array(taken[i].loop));
+      newClosed.push_back(taken[i].closed);
     }
-    loopsReported = progress.done;
+    loopsReported = taken.size();
     val o = val::object();
     o.set("done", progress.done);
     o.set("total", progress.total);

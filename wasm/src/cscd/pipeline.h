@@ -136,6 +136,7 @@ public:
   // after each one, so a round may end stage 1 part way (its later candidates are dropped).
   Progress accept(std::vector<Candidate> candidates) {
     if (candidates.size() != round.size()) throw std::logic_error("a round's candidates must match its sources");
+    if (!computed.empty()) throw std::logic_error("a round that step() began is ended by step()");
     for (size_t k = 0; k < candidates.size() && !done; k++) {
       if (candidates[k].source != round[k]) throw std::logic_error("a round's candidates must come in its order");
       drawn.push_back(std::move(candidates[k]));
@@ -148,18 +149,22 @@ public:
     return progress();
   }
 
-  // Stage 1 here, whole rounds until at least `count` more sources are done (or stage 1 is).
+  // Stage 1 here, `count` more sources (or until stage 1 is done), one at a time: a round is accepted
+  // when its last source is computed, so a caller can look for a cancel after every source.
   Progress step(size_t count) {
-    const size_t target = drawn.size() + count;
-    while (!done && drawn.size() < target) {
-      std::vector<Candidate> candidates;
-      for (size_t source : drawRound()) candidates.push_back(realization.separator(source));
-      accept(std::move(candidates));
+    for (size_t k = 0; k < count && !done; k++) {
+      const std::vector<size_t> sources = drawRound();
+      computed.push_back(realization.separator(sources[computed.size()]));
+      if (computed.size() == sources.size()) accept(std::exchange(computed, {}));
     }
     return progress();
   }
 
-  Progress progress() const { return {drawn.size(), done ? drawn.size() : total(), done}; }
+  // Sources done: accepted, and computed in the round under way.
+  Progress progress() const {
+    const size_t sources = drawn.size() + computed.size();
+    return {sources, done ? sources : total(), done};
+  }
 
   // Stage 2 (after the remaining sources of stage 1): prune, pack, regions, graph, clique to star.
   Skeleton finish() {
@@ -233,6 +238,7 @@ private:
   Options options;
   std::vector<Candidate> drawn;
   std::vector<size_t> round; // sources drawn, candidates not yet accepted
+  std::vector<Candidate> computed; // by step(): the round's first candidates
   std::vector<double> coverageHistory;
   std::chrono::steady_clock::time_point stage1Start; // the first draw
   double stage1Ms = 0;                               // from the first draw to the last candidate taken, wherever computed

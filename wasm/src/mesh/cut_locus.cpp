@@ -153,34 +153,28 @@ size_t CutLocusSolver::up(const std::vector<size_t>& parentEdge, size_t v) const
 }
 
 // Step 1: the distance is linear on each intrinsic triangle; its gradient in the face's own frame.
-std::vector<Vec2> CutLocusSolver::faceGradients(const std::vector<double>& distance) const {
-  std::vector<Vec2> gradient(faceVertices.size(), Vec2{0, 0});
-  for (size_t f = 0; f < faceVertices.size(); f++) {
-    const auto& fv = faceVertices[f];
-    if (!std::isfinite(distance[fv[0]])) continue; // faces of other components
-    for (int k = 0; k < 3; k++) {
-      gradient[f][0] += distance[fv[k]] * faceHatGradients[f][k][0];
-      gradient[f][1] += distance[fv[k]] * faceHatGradients[f][k][1];
-    }
+Vec2 CutLocusSolver::faceGradient(size_t f, const std::vector<double>& distance) const {
+  const auto& fv = faceVertices[f];
+  Vec2 gradient{0, 0};
+  if (!std::isfinite(distance[fv[0]])) return gradient; // a face of another component
+  for (int k = 0; k < 3; k++) {
+    gradient[0] += distance[fv[k]] * faceHatGradients[f][k][0];
+    gradient[1] += distance[fv[k]] * faceHatGradients[f][k][1];
   }
   return gradient;
 }
 
 // Step 2: area-weighted mean of the incident face gradients, each rotated into the vertex frame.
-std::vector<Vec2> CutLocusSolver::vertexGradients(const std::vector<Vec2>& faceGradient,
-                                                  const std::vector<double>& distance) const {
-  std::vector<Vec2> gradient(nVertices, Vec2{0, 0});
-  for (size_t v = 0; v < nVertices; v++) {
-    if (!std::isfinite(distance[v])) continue;
-    double weightSum = 0;
-    for (size_t c = cornerStart[v]; c < cornerStart[v + 1]; c++) {
-      Vec2 g = rotate(faceGradient[corners[c].face], corners[c].faceToVertex);
-      gradient[v][0] += corners[c].weight * g[0];
-      gradient[v][1] += corners[c].weight * g[1];
-      weightSum += corners[c].weight;
-    }
-    if (weightSum > 0) gradient[v] = {gradient[v][0] / weightSum, gradient[v][1] / weightSum};
+Vec2 CutLocusSolver::vertexGradient(size_t v, const std::vector<double>& distance) const {
+  Vec2 gradient{0, 0};
+  double weightSum = 0;
+  for (size_t c = cornerStart[v]; c < cornerStart[v + 1]; c++) {
+    Vec2 g = rotate(faceGradient(corners[c].face, distance), corners[c].faceToVertex);
+    gradient[0] += corners[c].weight * g[0];
+    gradient[1] += corners[c].weight * g[1];
+    weightSum += corners[c].weight;
   }
+  if (weightSum > 0) gradient = {gradient[0] / weightSum, gradient[1] / weightSum};
   return gradient;
 }
 
@@ -188,30 +182,34 @@ std::vector<Vec2> CutLocusSolver::vertexGradients(const std::vector<Vec2>& faceG
 // sharply. Largest angle between any two gradients of the closed one-ring, all transported into the
 // vertex's frame: a vertex right on the ridge has an averaged (meaningless) gradient of its own, but
 // its neighbours on the two sides point against each other.
-std::vector<double> CutLocusSolver::angleDeviations(const std::vector<Vec2>& vertexGradient,
-                                                    const std::vector<double>& distance,
+std::vector<double> CutLocusSolver::angleDeviations(const std::vector<double>& distance, const std::vector<double>& laplacian,
                                                     const CutLocusOptions& options) const {
   // Above this cosine the angle is below the threshold by far more than rounding: acos is not needed.
   const double clearlyBelow = std::cos(options.angleThreshold) + 1e-9;
-  // Directions only: each gradient is normalised once (transport is a rotation), not once per ring it is in.
+  // Directions only, each gradient normalised once (transport is a rotation), and only where asked:
+  // for a skeleton, at the vertices the Laplacian test lets pass and their rings (a few percent of the
+  // mesh; the gradients of every vertex were a quarter of the cut locus's time on the horse).
+  enum : char { Unknown, Some, None };
   std::vector<Vec2> direction(nVertices, Vec2{0, 0});
-  std::vector<char> hasDirection(nVertices, 0);
-  for (size_t v = 0; v < nVertices; v++) {
-    const Vec2& g = vertexGradient[v];
-    double length = std::sqrt(g[0] * g[0] + g[1] * g[1]);
-    if (length > 0) {
-      direction[v] = {g[0] / length, g[1] / length};
-      hasDirection[v] = 1;
+  std::vector<char> known(nVertices, Unknown);
+  auto directionOf = [&](size_t v) -> const Vec2* {
+    if (known[v] == Unknown) {
+      const Vec2 g = std::isfinite(distance[v]) ? vertexGradient(v, distance) : Vec2{0, 0};
+      const double length = std::sqrt(g[0] * g[0] + g[1] * g[1]);
+      known[v] = length > 0 ? Some : None;
+      if (length > 0) direction[v] = {g[0] / length, g[1] / length};
     }
-  }
+    return known[v] == Some ? &direction[v] : nullptr;
+  };
   std::vector<double> deviation(nVertices, std::numeric_limits<double>::quiet_NaN());
   std::vector<Vec2> ring;
   for (size_t v = 0; v < nVertices; v++) {
     if (!std::isfinite(distance[v])) continue;
+    if (!options.everyAngle && !(mayPass(v, laplacian, options))) continue;
     ring.clear();
-    if (hasDirection[v]) ring.push_back(direction[v]);
+    if (const Vec2* d = directionOf(v)) ring.push_back(*d);
     for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++)
-      if (hasDirection[neighbours[n].vertex]) ring.push_back(rotate(direction[neighbours[n].vertex], neighbours[n].transportToCenter));
+      if (const Vec2* d = directionOf(neighbours[n].vertex)) ring.push_back(rotate(*d, neighbours[n].transportToCenter));
     double smallestCosine = 1;
     for (size_t i = 0; i < ring.size(); i++)
       for (size_t j = i + 1; j < ring.size(); j++)
@@ -240,11 +238,14 @@ std::vector<double> CutLocusSolver::distanceLaplacian(const std::vector<double>&
 // ridge-like neighbour already in the tree. Vertices passing the thresholds go ahead of all others, so
 // the tree first spans every passing vertex connected to the root through passing vertices: that
 // subtree is the restriction in growing mode (a breadth-first search from the root through passing
-// vertices), and within it the tree runs along the ridge crests.
+// vertices), and within it the tree runs along the ridge crests. Only passing vertices and their paths
+// to the root are ever read, so the tree stops growing once it holds every passing vertex (on the
+// horse, after 12-92% of the vertices, median 79%, over 24 sources); the others keep no parent.
 std::vector<size_t> CutLocusSolver::ridgeTree(const std::vector<double>& laplacian, const std::vector<char>& passing,
                                               const std::vector<double>& distance, size_t root) const {
   std::vector<size_t> parent(nVertices, NONE);
   std::vector<char> inTree(nVertices, 0), queued(nVertices, 0);
+  size_t passingLeft = std::count(passing.begin(), passing.end(), 1);
   using Entry = std::pair<std::pair<bool, double>, size_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
   auto push = [&](size_t v) {
@@ -256,6 +257,7 @@ std::vector<size_t> CutLocusSolver::ridgeTree(const std::vector<double>& laplaci
     size_t v = frontier.top().second;
     frontier.pop();
     inTree[v] = 1;
+    passingLeft -= passing[v];
     std::pair<bool, double> best{true, INFINITY};
     for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++) {
       size_t w = neighbours[n].vertex;
@@ -266,9 +268,14 @@ std::vector<size_t> CutLocusSolver::ridgeTree(const std::vector<double>& laplaci
       }
       if (!queued[w] && std::isfinite(distance[w])) push(w);
     }
+    if (passingLeft == 0) break;
   }
   parent[root] = NONE;
   return parent;
+}
+
+bool CutLocusSolver::mayPass(size_t v, const std::vector<double>& laplacian, const CutLocusOptions& options) const {
+  return !onBoundary[v] && laplacian[v] <= -options.laplacianThreshold;
 }
 
 std::vector<char> CutLocusSolver::passingVertices(const std::vector<double>& angleDeviation,
@@ -276,7 +283,7 @@ std::vector<char> CutLocusSolver::passingVertices(const std::vector<double>& ang
                                                   const CutLocusOptions& options) const {
   std::vector<char> passing(nVertices, 0);
   for (size_t v = 0; v < nVertices; v++)
-    passing[v] = !onBoundary[v] && angleDeviation[v] >= options.angleThreshold && laplacian[v] <= -options.laplacianThreshold;
+    passing[v] = mayPass(v, laplacian, options) && angleDeviation[v] >= options.angleThreshold;
   return passing;
 }
 
@@ -399,8 +406,8 @@ CutLocus CutLocusSolver::compute(const std::vector<double>& distance, size_t sou
     if (vertexComponent[v] != component || std::isnan(dist[v])) dist[v] = INFINITY;
 
   CutLocus result;
-  result.angleDeviation = angleDeviations(vertexGradients(faceGradients(dist), dist), dist, options);
   result.laplacian = distanceLaplacian(dist);
+  result.angleDeviation = angleDeviations(dist, result.laplacian, options);
   result.root = source;
   for (size_t v = 0; v < nVertices; v++)
     if (std::isfinite(dist[v]) && dist[v] > dist[result.root]) result.root = v;

@@ -24,9 +24,9 @@ struct CutLocusOptions {
   CutLocusRestriction restriction = CutLocusRestriction::Pruning;
   // Leaf branches with fewer edges than this are removed (0 keeps everything).
   int pruneDepth = 3;
-  // Every vertex's angle deviation, for teaching views. Without it, only vertices whose gradients turn
-  // by nearly the threshold or more get theirs (NaN elsewhere): the only ones the thresholds look at,
-  // and an arc cosine per vertex is a tenth of a skeleton's cut-locus time.
+  // Every vertex's angle deviation, for teaching views. Without it, only vertices that pass the other
+  // tests and whose gradients turn by nearly the threshold or more get theirs (NaN elsewhere): the only
+  // ones the thresholds look at.
   bool everyAngle = true;
 };
 
@@ -73,10 +73,12 @@ private:
     Vec2 faceToVertex;  // unit complex number: face frame -> vertex frame
   };
 
-  std::vector<Vec2> faceGradients(const std::vector<double>& distance) const;
-  std::vector<Vec2> vertexGradients(const std::vector<Vec2>& faceGradient, const std::vector<double>& distance) const;
-  std::vector<double> angleDeviations(const std::vector<Vec2>& vertexGradient, const std::vector<double>& distance,
+  Vec2 faceGradient(size_t face, const std::vector<double>& distance) const;
+  Vec2 vertexGradient(size_t vertex, const std::vector<double>& distance) const;
+  std::vector<double> angleDeviations(const std::vector<double>& distance, const std::vector<double>& laplacian,
                                       const CutLocusOptions& options) const;
+  // Whether a vertex passes every test but the angle's (which costs its ring's gradients).
+  bool mayPass(size_t vertex, const std::vector<double>& laplacian, const CutLocusOptions& options) const;
   std::vector<double> distanceLaplacian(const std::vector<double>& distance) const;
   // Trees are stored as the edge to the parent of every vertex (NONE at the root and off the component);
   // up() is the parent vertex (or NONE).

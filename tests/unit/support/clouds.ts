@@ -1,4 +1,5 @@
-// Point clouds made in code: PLY files in every encoding.
+// Point clouds made in code: PLY files in every encoding, and points on a sphere.
+import { random } from '../../../lib/core/random.ts';
 
 export type PlyEncoding = 'ascii' | 'binary_little_endian' | 'binary_big_endian';
 
@@ -23,4 +24,15 @@ export function cloudPly(
     o += size;
   }
   return bytes;
+}
+
+/** `n` points spread at random (from the seed) over the unit sphere, with their outward normals. */
+export function spherePoints(n: number, seed: number): { positions: Float64Array; normals: Float32Array } {
+  const next = random(seed);
+  const positions = new Float64Array(3 * n);
+  for (let i = 0; i < n; i++) {
+    const z = 2 * next() - 1, angle = 2 * Math.PI * next(), r = Math.sqrt(1 - z * z);
+    positions.set([r * Math.cos(angle), r * Math.sin(angle), z], 3 * i);
+  }
+  return { positions, normals: Float32Array.from(positions) };
 }

@@ -186,7 +186,7 @@ export function boundingBoxDiagonal(pos: Float64Array, used: Uint8Array | null =
  * `tolerance` that was not welded itself (so no chains form, and the points kept are all farther apart
  * than `tolerance`), found on a grid: only the cells near a point are searched. Returns the target of
  * every point (itself when kept or not used) and how many were welded. Shared by mesh repair and the
- * point-cloud checks.
+ * point-cloud checks and subsampling.
  */
 export function weld(pos: Float64Array, tolerance: number, used: Uint8Array | null = null): { to: Int32Array; count: number } {
   const nV = pos.length / 3;

@@ -1,4 +1,4 @@
-// Point clouds made in code: PLY files in every encoding, and points on a sphere.
+// Point clouds made in code: PLY files in every encoding, and point sets on known shapes.
 import { random } from '../../../lib/core/random.ts';
 
 export type PlyEncoding = 'ascii' | 'binary_little_endian' | 'binary_big_endian';
@@ -35,4 +35,16 @@ export function spherePoints(n: number, seed: number): { positions: Float64Array
     positions.set([r * Math.cos(angle), r * Math.sin(angle), z], 3 * i);
   }
   return { positions, normals: Float32Array.from(positions) };
+}
+
+/** Distance from each point to its nearest other point (brute force: small clouds only). */
+export function nearestDistances(positions: Float64Array): number[] {
+  const n = positions.length / 3;
+  return Array.from({ length: n }, (_, i) => {
+    let best = Infinity;
+    for (let j = 0; j < n; j++) {
+      if (j !== i) best = Math.min(best, Math.hypot(positions[3 * i] - positions[3 * j], positions[3 * i + 1] - positions[3 * j + 1], positions[3 * i + 2] - positions[3 * j + 2]));
+    }
+    return best;
+  });
 }

@@ -1,9 +1,11 @@
 // Point-cloud checks on load (lib/io/cloud-check.ts): each change on a cloud built to need it, with the
 // sentence that says it, and each refusal with its message.
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { checkCloud } from '../../lib/io/cloud-check.ts';
-import { MeshFormatError, type CloudArrays } from '../../lib/io/index.ts';
+import { MeshFormatError, parseShape, type CloudArrays } from '../../lib/io/index.ts';
 import { random } from '../../lib/core/random.ts';
+import { fixture } from '../paths.ts';
 import { spherePoints } from './support/clouds.ts';
 
 const K = 8;
@@ -40,6 +42,12 @@ describe('clouds that need nothing', () => {
     expect(result.cloud).toBe(sphere);
     expect(result.repairs).toEqual([]);
     expect(Array.from(result.pointMap)).toEqual(range(200));
+  });
+
+  it.each(['bob_subsample.ply', 'armadillo_gel_pts.ply'])('the real cloud %s', (name) => {
+    const cloud = parseShape(new Uint8Array(readFileSync(fixture('clouds', name))), name);
+    expect(cloud.kind).toBe('cloud');
+    expect(checkCloud(cloud as CloudArrays, K).repairs).toEqual([]);
   });
 });
 

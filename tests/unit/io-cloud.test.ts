@@ -1,9 +1,11 @@
 // Point-cloud reading (lib/io: PLY and OBJ without faces, text point lists): every variant reads the
 // same points, bad input gives one-line MeshFormatErrors naming the line, and parseMesh refuses clouds.
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import {
   CLOUD_EXTENSIONS, MESH_EXTENSIONS, MeshFormatError, SHAPE_EXTENSIONS, formatFromName, parseMesh, parseShape, type ParsedCloud,
 } from '../../lib/io/index.ts';
+import { fixture } from '../paths.ts';
 import { cloudPly, type PlyEncoding } from './support/clouds.ts';
 
 const text = (s: string) => new TextEncoder().encode(s);
@@ -219,5 +221,33 @@ describe('parseShape and parseMesh', () => {
     expect(refuse(cloudPly(POINTS, null, 'ascii', 'float'), 'c.ply')).toBe('PLY: the file is a point cloud (4 points, no faces), not a mesh');
     expect(refuse(text('v 1 2 3\n'), 'c.obj')).toBe('OBJ: the file is a point cloud (1 point, no faces), not a mesh');
     expect(refuse(text('1 2 3\n4 5 6\n'), 'c.xyz')).toBe('XYZ: the file is a point cloud (2 points, no faces), not a mesh');
+  });
+});
+
+describe('real point clouds', () => {
+  const read = (name: string) => cloud(new Uint8Array(readFileSync(fixture('clouds', name))), name);
+  /** [min x, min y, min z, max x, max y, max z] */
+  const box = (positions: Float64Array) => [0, 1, 2].map((k) => Math.min(...positions.filter((_, i) => i % 3 === k)))
+    .concat([0, 1, 2].map((k) => Math.max(...positions.filter((_, i) => i % 3 === k))));
+
+  it('bob, subsampled: the header count, normals of unit length, the box of the full cloud', () => {
+    const bob = read('bob_subsample.ply');
+    expect(bob.positions.length).toBe(3 * 1948);
+    expect(bob.normals).not.toBeNull();
+    for (let i = 0; i < 1948; i++) expect(Math.hypot(...bob.normals!.subarray(3 * i, 3 * i + 3))).toBeCloseTo(1, 5);
+    // Nearly all of the box of the shared bob_clean.ply (diagonal 2.554 in its MANIFEST.md), and within it.
+    const corners = box(bob.positions);
+    const [x0, y0, z0, x1, y1, z1] = corners;
+    expect(Math.hypot(x1 - x0, y1 - y0, z1 - z0)).toBeCloseTo(2.552, 3);
+    const full = [-0.91269, -0.51128, -0.73101, 0.94292, 0.46055, 0.73105];
+    corners.forEach((x, k) => expect(k < 3 ? x >= full[k] : x <= full[k]).toBe(true));
+  });
+
+  it('the GEL armadillo points: the header count, no normals, the diagonal of the MANIFEST', () => {
+    const armadillo = read('armadillo_gel_pts.ply');
+    expect(armadillo.positions.length).toBe(3 * 6488);
+    expect(armadillo.normals).toBeNull();
+    const [x0, y0, z0, x1, y1, z1] = box(armadillo.positions);
+    expect(Math.hypot(x1 - x0, y1 - y0, z1 - z0)).toBeCloseTo(229.2, 1);
   });
 });

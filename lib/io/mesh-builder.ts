@@ -1,8 +1,8 @@
 /** Growable vertex and triangle arrays shared by the parsers, with fan triangulation of polygons. */
-import { MeshFormatError, type MeshFormat, type ParsedMesh } from './types.ts';
+import { MeshFormatError, type MeshFormat, type ParsedMesh, type ShapeFormat } from './types.ts';
 
 /** How each format names itself at the start of error messages and warnings. */
-export const FORMAT_LABEL: Record<MeshFormat, string> = { obj: 'OBJ', ply: 'PLY', stl: 'STL', off: 'OFF', glb: 'GLB' };
+export const FORMAT_LABEL: Record<ShapeFormat, string> = { obj: 'OBJ', ply: 'PLY', stl: 'STL', off: 'OFF', glb: 'GLB', xyz: 'XYZ' };
 
 export class MeshBuilder {
   private positions: Float64Array;
@@ -28,6 +28,11 @@ export class MeshBuilder {
 
   get triangleCount(): number {
     return this.triangleIndexCount / 3;
+  }
+
+  /** The vertices so far, x y z interleaved (for a file that turns out to be a point cloud). */
+  vertices(): Float64Array {
+    return trim(this.positions, this.positionCount);
   }
 
   addVertex(x: number, y: number, z: number): void {
@@ -67,7 +72,8 @@ export class MeshBuilder {
       warnings.push(`split ${this.polygonsSplit} polygons with more than 3 vertices into triangles`);
     }
     return {
-      positions: trim(this.positions, this.positionCount),
+      kind: 'mesh',
+      positions: this.vertices(),
       triangles: trim(this.triangles, this.triangleIndexCount),
       format: this.format,
       warnings,
@@ -75,12 +81,12 @@ export class MeshBuilder {
   }
 }
 
-function grow<T extends Float64Array | Uint32Array>(array: T): T {
+export function grow<T extends Float64Array | Float32Array | Uint32Array>(array: T): T {
   const bigger = new (array.constructor as new (n: number) => T)(array.length * 2);
   bigger.set(array);
   return bigger;
 }
 
-function trim<T extends Float64Array | Uint32Array>(array: T, length: number): T {
+export function trim<T extends Float64Array | Float32Array | Uint32Array>(array: T, length: number): T {
   return (length === array.length ? array : array.slice(0, length)) as T;
 }

@@ -67,8 +67,10 @@ export function repairMesh<P extends MeshArrays['positions']>(mesh: { positions:
   let pos: Float64Array = Float64Array.from(positions);
   let vertexCount = nV;
 
-  const diagonal = boundingBoxDiagonal(pos, tri);
-  const welded = weld(pos, tri, nV, WELD_TOLERANCE * diagonal);
+  const inFace = new Uint8Array(nV);
+  for (let c = 0; c < tri.length; c++) inFace[tri[c]] = 1;
+  // Unused vertices are left to the final compaction.
+  const welded = weld(pos, WELD_TOLERANCE * boundingBoxDiagonal(pos, inFace), inFace);
   if (welded.count > 0) {
     for (let c = 0; c < tri.length; c++) tri[c] = welded.to[tri[c]];
     repairs.push(`welded ${count(welded.count, 'duplicate vertex', 'duplicate vertices')} (closer than ${WELD_TOLERANCE.toExponential()} of the bounding-box diagonal)`);
@@ -153,7 +155,8 @@ export function repairMesh<P extends MeshArrays['positions']>(mesh: { positions:
   return { mesh: { positions: out, triangles: tri }, repairs, vertexMap };
 }
 
-function count(n: number, one: string, many: string): string {
+/** "1 face", "3 faces": a count for a message. */
+export function count(n: number, one: string, many: string): string {
   return `${n} ${n === 1 ? one : many}`;
 }
 
@@ -163,36 +166,39 @@ function identity(n: number): Int32Array {
   return map;
 }
 
-/** Diagonal of the bounding box of the vertices used by faces. */
-function boundingBoxDiagonal(pos: Float64Array, tri: Uint32Array): number {
+/** Diagonal of the bounding box of the points (of those marked in `used`, when given); 0 for none. */
+export function boundingBoxDiagonal(pos: Float64Array, used: Uint8Array | null = null): number {
   const min = [Infinity, Infinity, Infinity];
   const max = [-Infinity, -Infinity, -Infinity];
-  for (let c = 0; c < tri.length; c++) {
-    const o = 3 * tri[c];
+  for (let v = 0; v < pos.length / 3; v++) {
+    if (used && !used[v]) continue;
     for (let k = 0; k < 3; k++) {
-      const x = pos[o + k];
+      const x = pos[3 * v + k];
       if (x < min[k]) min[k] = x;
       if (x > max[k]) max[k] = x;
     }
   }
-  return tri.length === 0 ? 0 : Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
+  return min[0] > max[0] ? 0 : Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
 }
 
 /**
- * Welds every vertex used by a face to the lowest-numbered earlier one within `tolerance` that was not
- * welded itself (so no chains form), found on a grid: only the cells near a vertex are searched.
- * Unused vertices are left to the final compaction. Returns the target of every vertex and how many
- * were welded.
+ * Welds every point (of those marked in `used`, when given) to the lowest-numbered earlier one within
+ * `tolerance` that was not welded itself (so no chains form, and the points kept are all farther apart
+ * than `tolerance`), found on a grid: only the cells near a point are searched. Returns the target of
+ * every point (itself when kept or not used) and how many were welded. Shared by mesh repair and the
+ * point-cloud checks and subsampling.
  */
-function weld(pos: Float64Array, tri: Uint32Array, nV: number, tolerance: number): { to: Int32Array; count: number } {
+export function weld(pos: Float64Array, tolerance: number, used: Uint8Array | null = null): { to: Int32Array; count: number } {
+  const nV = pos.length / 3;
   const to = identity(nV);
-  const used = new Uint8Array(nV);
-  for (let c = 0; c < tri.length; c++) used[tri[c]] = 1;
-  let usedCount = 0;
-  for (let v = 0; v < nV; v++) usedCount += used[v];
+  let usedCount = nV;
+  if (used) {
+    usedCount = 0;
+    for (let v = 0; v < nV; v++) usedCount += used[v];
+  }
   const min = [Infinity, Infinity, Infinity];
   for (let v = 0; v < nV; v++) {
-    if (!used[v]) continue;
+    if (used && !used[v]) continue;
     for (let k = 0; k < 3; k++) if (pos[3 * v + k] < min[k]) min[k] = pos[3 * v + k];
   }
   // Cells twice the reach: a vertex's reach overlaps its own cell and at most one neighbour per axis,
@@ -215,7 +221,7 @@ function weld(pos: Float64Array, tri: Uint32Array, nV: number, tolerance: number
 
   let welded = 0;
   for (let v = 0; v < nV; v++) {
-    if (!used[v]) continue;
+    if (used && !used[v]) continue;
     const px = pos[3 * v], py = pos[3 * v + 1], pz = pos[3 * v + 2];
     const gx = (px - min[0]) / cell, gy = (py - min[1]) / cell, gz = (pz - min[2]) / cell;
     const cx = Math.floor(gx), cy = Math.floor(gy), cz = Math.floor(gz);

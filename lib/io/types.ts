@@ -1,7 +1,13 @@
 /** Mesh file formats read by CSCD Studio (CLI and page alike). */
 export type MeshFormat = 'obj' | 'ply' | 'stl' | 'off' | 'glb';
 
+/** Point-cloud formats: PLY and OBJ files with vertices and no faces, and text lists of coordinates. */
+export type CloudFormat = 'ply' | 'obj' | 'xyz';
+
+export type ShapeFormat = MeshFormat | CloudFormat;
+
 export interface ParsedMesh {
+  kind: 'mesh';
   positions: Float64Array;
   triangles: Uint32Array;
   format: MeshFormat;
@@ -9,7 +15,25 @@ export interface ParsedMesh {
   warnings: string[];
 }
 
-/** A file that cannot be read as a mesh: its message is one clear line for the user. */
+/** The arrays of a point cloud, which the cloud checks and the subsampling work on. */
+export interface CloudArrays {
+  /** x y z of each point, interleaved. */
+  positions: Float64Array;
+  /** nx ny nz of each point, interleaved; null when the file has no normals (not all three of them). */
+  normals: Float32Array | null;
+}
+
+export interface ParsedCloud extends CloudArrays {
+  kind: 'cloud';
+  format: CloudFormat;
+  /** Things the parser did that the user should know (columns ignored, normals not read...). */
+  warnings: string[];
+}
+
+/** What a file holds: a mesh or a point cloud. */
+export type ParsedShape = ParsedMesh | ParsedCloud;
+
+/** A file that cannot be read as a mesh or a point cloud: its message is one clear line for the user. */
 export class MeshFormatError extends Error {
   override name = 'MeshFormatError';
 }

@@ -1,7 +1,7 @@
 /**
  * How large a mesh the geodesic solver handles in reasonable time, from the measurements in
- * docs/limits.md (scripts/measure-limits.ts): shared by the page (the decimation offer) and the CLI
- * (its warning), so both say the same.
+ * docs/limits.md (scripts/measure-limits.ts), and how large a point cloud is let in: shared by the
+ * page (the decimation and subsampling offers) and the CLI (its warnings), so both say the same.
  */
 
 /** Above this many faces the page offers to decimate and the CLI warns: the solver then takes over ~6 s. */
@@ -9,6 +9,15 @@ export const FACE_LIMIT = 200_000;
 
 /** The face count the page offers to decimate to (about 2 s to open the solver). */
 export const DECIMATE_TARGET = 100_000;
+
+// Point clouds: no skeleton of a cloud is computed yet, so nothing is measured. Until it is, a cloud
+// is allowed as many points as a closed mesh at the limits has vertices (half its faces).
+
+/** Above this many points the page is to offer to subsample (lib/cloud/subsample.ts) and the CLI to warn. */
+export const POINT_LIMIT = FACE_LIMIT / 2;
+
+/** The point count the page is to offer to subsample to. */
+export const SUBSAMPLE_TARGET = DECIMATE_TARGET / 2;
 
 // Least-squares fit of log(seconds) against log(vertices) over the measured tori of 50K to 1M faces:
 // seconds = SOLVER_FIT_A * vertices^SOLVER_FIT_B (within 35% of every measurement).
@@ -30,4 +39,10 @@ export function aboutDuration(seconds: number): string {
 export function sizeWarning(faces: number, vertices: number): string | null {
   if (faces <= FACE_LIMIT) return null;
   return `this mesh has ${faces} faces; preparing the geodesic solver takes ${aboutDuration(expectedSolverSeconds(vertices))}`;
+}
+
+/** The warning for a point cloud above POINT_LIMIT, or null (the page's offer and the CLI's warning). */
+export function cloudSizeWarning(points: number): string | null {
+  if (points <= POINT_LIMIT) return null;
+  return `this point cloud has ${points} points, more than the ${POINT_LIMIT} advised; subsample it to about ${SUBSAMPLE_TARGET}`;
 }

@@ -37,7 +37,7 @@ describe('empty and unrecognisable files', () => {
     expect(errorOf(garbage, 'g.off')).toBe("OFF: line 1: expected the OFF header, found 'hello'");
     expect(errorOf(garbage, 'g.ply')).toBe("PLY: missing 'ply' magic line");
     expect(errorOf(garbage, 'g.stl')).toMatch(/^STL: not an ASCII STL \(no 'solid' keyword\) and too short/);
-    expect(errorOf(garbage, 'g.dat')).toMatch(/^unknown mesh format: 'g.dat'/);
+    expect(errorOf(garbage, 'g.dat')).toMatch(/^unknown format: 'g.dat'/);
   });
 
   it('a binary file named .obj or .off', () => {
@@ -47,15 +47,15 @@ describe('empty and unrecognisable files', () => {
   });
 
   it('vertices but no faces', () => {
-    expect(errorOf(text(TRIANGLE_OBJ + 'l 1 2\n'), 'x.obj')).toBe('OBJ: no faces in file');
+    expect(errorOf(text(TRIANGLE_OBJ + 'l 1 2\n'), 'x.obj')).toBe('OBJ: no faces in file but lines (a skeleton?): neither a mesh nor a point cloud');
     expect(errorOf(text('OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n'), 'x.off')).toBe('OFF: no faces in file');
-    expect(errorOf(text(PLY_HEADER(1, 0) + '0 0 0\n'), 'x.ply')).toBe('PLY: no faces in file');
+    expect(errorOf(text(PLY_HEADER(1, 0) + '0 0 0\n'), 'x.ply')).toBe('PLY: the file is a point cloud (1 point, no faces), not a mesh');
     expect(errorOf(text('solid empty\nendsolid empty\n'), 'x.stl')).toBe('STL: no faces in file');
   });
 
   it('a point cloud PLY', () => {
     const cloud = new Uint8Array(readFileSync(`${sharedData}/pointclouds/bob_clean.ply`));
-    expect(errorOf(cloud, 'bob_clean.ply')).toBe("PLY: no 'face' element in header (a point cloud?)");
+    expect(errorOf(cloud, 'bob_clean.ply')).toBe('PLY: the file is a point cloud (20000 points, no faces), not a mesh');
   });
 });
 

@@ -1,0 +1,50 @@
+// Point clouds made in code: PLY files in every encoding, and point sets on known shapes.
+import { random } from '../../../lib/core/random.ts';
+
+export type PlyEncoding = 'ascii' | 'binary_little_endian' | 'binary_big_endian';
+
+/** A PLY point cloud: x y z (then nx ny nz when given) of one scalar type, no face element. */
+export function cloudPly(
+  points: number[][], normals: number[][] | null, encoding: PlyEncoding, type: 'float' | 'double', comment = 'made by tests/unit/support/clouds.ts',
+): Uint8Array {
+  const names = normals ? ['x', 'y', 'z', 'nx', 'ny', 'nz'] : ['x', 'y', 'z'];
+  const header = `ply\nformat ${encoding} 1.0\ncomment ${comment}\nelement vertex ${points.length}\n`
+    + `${names.map((name) => `property ${type} ${name}\n`).join('')}end_header\n`;
+  const rows = points.map((p, i) => (normals ? [...p, ...normals[i]] : p));
+  if (encoding === 'ascii') return new TextEncoder().encode(header + rows.map((row) => row.join(' ')).join('\n') + '\n');
+  const size = type === 'float' ? 4 : 8;
+  const bytes = new Uint8Array(header.length + size * names.length * points.length);
+  bytes.set(new TextEncoder().encode(header));
+  const view = new DataView(bytes.buffer);
+  const littleEndian = encoding === 'binary_little_endian';
+  let o = header.length;
+  for (const value of rows.flat()) {
+    if (type === 'float') view.setFloat32(o, value, littleEndian);
+    else view.setFloat64(o, value, littleEndian);
+    o += size;
+  }
+  return bytes;
+}
+
+/** `n` points spread at random (from the seed) over the unit sphere, with their outward normals. */
+export function spherePoints(n: number, seed: number): { positions: Float64Array; normals: Float32Array } {
+  const next = random(seed);
+  const positions = new Float64Array(3 * n);
+  for (let i = 0; i < n; i++) {
+    const z = 2 * next() - 1, angle = 2 * Math.PI * next(), r = Math.sqrt(1 - z * z);
+    positions.set([r * Math.cos(angle), r * Math.sin(angle), z], 3 * i);
+  }
+  return { positions, normals: Float32Array.from(positions) };
+}
+
+/** Distance from each point to its nearest other point (brute force: small clouds only). */
+export function nearestDistances(positions: Float64Array): number[] {
+  const n = positions.length / 3;
+  return Array.from({ length: n }, (_, i) => {
+    let best = Infinity;
+    for (let j = 0; j < n; j++) {
+      if (j !== i) best = Math.min(best, Math.hypot(positions[3 * i] - positions[3 * j], positions[3 * i + 1] - positions[3 * j + 1], positions[3 * i + 2] - positions[3 * j + 2]));
+    }
+    return best;
+  });
+}

@@ -6,6 +6,7 @@
 #include "geometrycentral/surface/flip_geodesics.h"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <set>
 #include <stdexcept>
@@ -157,8 +158,10 @@ SurfacePoint toIntrinsic(const Patch& patch, const SurfacePoint& onPatch) {
 }
 
 // Areas of the two sides of the loop: faces flooded from the left and from the right of the loop,
-// never across it. A loop that does not separate its region reports (0, area of the region).
-std::array<double, 2> sideAreas(FlipEdgeNetwork& network, const std::vector<Halfedge>& path) {
+// never across it, nor into a face that `reached` rejects. A loop that does not separate them
+// reports (0, area flooded).
+template <class Reached>
+std::array<double, 2> sideAreas(FlipEdgeNetwork& network, const std::vector<Halfedge>& path, Reached reached) {
   SignpostIntrinsicTriangulation& tri = *network.tri;
   tri.requireFaceAreas();
   FaceData<int> side(network.mesh, -1);
@@ -166,32 +169,54 @@ std::array<double, 2> sideAreas(FlipEdgeNetwork& network, const std::vector<Half
   bool separates = true;
   for (int s = 0; s < 2; s++) {
     std::queue<Face> queue;
+    auto enter = [&](Face f) {
+      if (side[f] == 1 - s) separates = false;
+      if (side[f] < 0 && reached(f)) {
+        side[f] = s;
+        queue.push(f);
+      }
+    };
     for (Halfedge he : path) {
       Halfedge seed = s == 0 ? he : he.twin();
-      if (!seed.isInterior()) continue;
-      if (side[seed.face()] == 1 - s) separates = false;
-      if (side[seed.face()] < 0) {
-        side[seed.face()] = s;
-        queue.push(seed.face());
-      }
+      if (seed.isInterior()) enter(seed.face());
     }
     while (!queue.empty()) {
       Face f = queue.front();
       queue.pop();
       area[s] += tri.faceAreas[f];
-      for (Halfedge h : f.adjacentHalfedges()) {
-        Halfedge t = h.twin();
-        if (!t.isInterior() || network.edgeInPath(h.edge())) continue;
-        if (side[t.face()] == 1 - s) separates = false;
-        if (side[t.face()] < 0) {
-          side[t.face()] = s;
-          queue.push(t.face());
-        }
-      }
+      for (Halfedge h : f.adjacentHalfedges())
+        if (h.twin().isInterior() && !network.edgeInPath(h.edge())) enter(h.twin().face());
     }
   }
   if (!separates) return {0, area[0] + area[1]};
   return {std::min(area[0], area[1]), std::max(area[0], area[1])};
+}
+
+// Distance along the triangulation's edges from the loop's vertices (Dijkstra).
+VertexData<double> distanceFromPath(FlipEdgeNetwork& network, const std::vector<Halfedge>& path) {
+  SignpostIntrinsicTriangulation& tri = *network.tri;
+  tri.requireEdgeLengths();
+  VertexData<double> distance(network.mesh, INFINITY);
+  using Entry = std::pair<double, size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
+  for (Halfedge he : path) {
+    distance[he.tailVertex()] = 0;
+    frontier.push({0, he.tailVertex().getIndex()});
+  }
+  while (!frontier.empty()) {
+    auto [d, index] = frontier.top();
+    frontier.pop();
+    Vertex v = network.mesh.vertex(index);
+    if (d > distance[v]) continue;
+    for (Halfedge he : v.outgoingHalfedges()) {
+      const double through = d + tri.edgeLengths[he.edge()];
+      if (through < distance[he.tipVertex()]) {
+        distance[he.tipVertex()] = through;
+        frontier.push({through, he.tipVertex().getIndex()});
+      }
+    }
+  }
+  return distance;
 }
 
 } // namespace
@@ -261,7 +286,20 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
       first.vertex == last.vertex)
     onPatch.pop_back(); // closed: the last point repeats the first
   for (const SurfacePoint& p : onPatch) result.loop.push_back(intrinsic.equivalentPointOnInput(toIntrinsic(*patch, p)));
-  result.areas = sideAreas(network, path);
+  result.areas = sideAreas(network, path, [](Face) { return true; });
+  // A loop around a handle that lies whole in the region (the tube of a ring) separates nothing there:
+  // its sides meet around the handle, and its score would be 0, so it could never be packed and the
+  // handle's cycle was lost (hanger's eyelet, at 7 seeds of 8). Near the loop it still separates: its
+  // sides are then measured over the faces within one loop radius of it.
+  if (closed && !(result.areas[0] > 0)) {
+    const VertexData<double> distance = distanceFromPath(network, path);
+    const double radius = network.length() / (2 * M_PI);
+    result.areas = sideAreas(network, path, [&](Face f) {
+      for (Vertex v : f.adjacentVertices())
+        if (distance[v] > radius) return false;
+      return true;
+    });
+  }
   for (double& a : result.areas) a *= patch->scale * patch->scale;
   return result;
 }

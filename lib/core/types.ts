@@ -75,6 +75,15 @@ export interface Options {
   roundSize: number;
 }
 
+/**
+ * The options of a point cloud: every option, and those only clouds have (lib/core/options.ts,
+ * `shapes: 'cloud'`), which say how the cloud is made into a surface to compute on.
+ */
+export interface CloudOptions extends Options {
+  /** Neighbours of each point (k of the kNN search) that its local triangulation is built from. */
+  neighbours: number;
+}
+
 /** Why stage 1 produced no separator for a source ('ok' when it did). */
 export type SeparatorStatus =
   | 'ok'

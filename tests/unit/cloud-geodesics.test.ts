@@ -1,0 +1,135 @@
+// CSCD-PC's per-cloud object through the real WASM module: its facts, heat-method distances on the
+// tufted triangulation (held to the exact geodesics of the mesh the bob cloud was sampled from) and
+// bad input.
+import { readFileSync } from 'node:fs';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { CoreError, loadCoreNode, type Cloud, type Core } from '../../lib/core/node.ts';
+import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
+import { fixture, sharedMesh } from '../paths.ts';
+import { spherePoints } from './support/clouds.ts';
+import { readMesh } from './support/meshes.ts';
+
+function readCloud(name: string): ParsedCloud {
+  const shape = parseShape(new Uint8Array(readFileSync(fixture('clouds', name))), name);
+  if (shape.kind !== 'cloud') throw new Error(`${name} holds a mesh`);
+  return shape;
+}
+
+/** The index of the point of `points` nearest to each point of `queries` (brute force: small sets only). */
+function nearest(queries: ArrayLike<number>, points: ArrayLike<number>): Int32Array {
+  const result = new Int32Array(queries.length / 3);
+  for (let q = 0; q < result.length; q++) {
+    let best = Infinity;
+    for (let p = 0; p < points.length / 3; p++) {
+      const d = (points[3 * p] - queries[3 * q]) ** 2 + (points[3 * p + 1] - queries[3 * q + 1]) ** 2 + (points[3 * p + 2] - queries[3 * q + 2]) ** 2;
+      if (d < best) [best, result[q]] = [d, p];
+    }
+  }
+  return result;
+}
+
+let core: Core;
+const bob = readCloud('bob_subsample.ply');
+let bobCloud: Cloud;
+beforeAll(async () => {
+  core = await loadCoreNode();
+  bobCloud = core.openCloud(bob);
+});
+afterAll(() => bobCloud.dispose());
+
+describe('a cloud opened in the core', () => {
+  it('has the facts of bob_subsample (1948 points with normals)', () => {
+    const { facts } = bobCloud;
+    expect(facts).toMatchObject({ points: 1948, neighbours: 30, components: 1, normalsFromFile: true });
+    expect(facts.bboxDiagonal).toBeCloseTo(2.5516, 3);
+    // Neighbouring points of 1948 spread over bob's surface (about 7.5 square units) are some 0.06 apart.
+    expect(facts.meanSpacing).toBeGreaterThan(0.02);
+    expect(facts.meanSpacing).toBeLessThan(0.2);
+  });
+
+  it('has the facts of the GEL armadillo (6488 points, PCA normals), with the k asked for', () => {
+    const cloud = core.openCloud(readCloud('armadillo_gel_pts.ply'), { neighbours: 12 });
+    try {
+      expect(cloud.facts).toMatchObject({ points: 6488, neighbours: 12, normalsFromFile: false });
+      expect(cloud.facts.bboxDiagonal).toBeCloseTo(229.2, 1);
+      const d = cloud.distance(0);
+      expect(d[0]).toBe(0);
+      expect(Array.from(d).filter((x) => Number.isFinite(x)).length).toBeGreaterThan(0.99 * 6488);
+    } finally {
+      cloud.dispose();
+    }
+  });
+});
+
+describe('geodesic distance on a cloud', () => {
+  it('is 0 at the source, positive and finite elsewhere on a connected cloud', () => {
+    const d = bobCloud.distance(100);
+    expect(d).toHaveLength(1948);
+    expect(d[100]).toBe(0);
+    d.forEach((x, p) => p !== 100 && expect(x, `point ${p}`).toBeGreaterThan(0));
+    expect(d.every((x) => Number.isFinite(x))).toBe(true);
+  });
+
+  it('is near the exact geodesic distance on the bob mesh the cloud was sampled from', () => {
+    const mesh = readMesh(sharedMesh('bob.ply'));
+    const surface = core.openSurface(mesh);
+    const vertexOf = nearest(bob.positions, mesh.positions);
+    let sum = 0;
+    let count = 0;
+    try {
+      for (const source of [0, 700, 1400]) {
+        const d = bobCloud.distance(source);
+        const exact = surface.exactDistanceFromVertex(vertexOf[source]);
+        // Far enough from the source that the cloud point and its nearest vertex being apart does not count.
+        for (let p = 0; p < d.length; p++) {
+          const reference = exact[vertexOf[p]];
+          if (!(reference > 0.1 * bobCloud.facts.bboxDiagonal)) continue;
+          sum += Math.abs(d[p] - reference) / reference;
+          count++;
+        }
+      }
+    } finally {
+      surface.dispose();
+    }
+    expect(count).toBeGreaterThan(1948);
+    // Measured 2026-12-02: 2.8% (k = 8 to 50 alike); the mesh's own heat method, between the same vertices, 2.2%.
+    expect(sum / count).toBeLessThan(0.035);
+  });
+
+  it('from several points is near the least of their distances, near 0 at each', () => {
+    const sources = [0, 700, 1400];
+    const both = bobCloud.distanceFromPoints(sources);
+    const singles = sources.map((s) => bobCloud.distance(s));
+    // One additive constant for all sources: their mean is 0, each one near it.
+    for (const s of sources) expect(both[s]).toBeLessThan(0.01 * bobCloud.facts.bboxDiagonal);
+    let sum = 0;
+    for (let p = 0; p < both.length; p++) sum += Math.abs(both[p] - Math.min(...singles.map((d) => d[p])));
+    // Measured: 0.64% of the diagonal on average (the heat method smooths where the fronts meet).
+    expect(sum / both.length / bobCloud.facts.bboxDiagonal).toBeLessThan(0.01);
+  });
+
+  it('refuses a source that is not a point of the cloud', () => {
+    expect(() => bobCloud.distance(1948)).toThrow(new CoreError('point 1948 is out of range (the cloud has 1948 points)'));
+    expect(() => bobCloud.distance(1.5)).toThrow(CoreError);
+  });
+});
+
+describe('bad clouds', () => {
+  const small = spherePoints(20, 3);
+
+  it('are refused with an input error: k larger than the cloud, a non-finite coordinate', () => {
+    const tooFew = (() => {
+      try {
+        core.openCloud(small);
+      } catch (error) {
+        return error;
+      }
+    })();
+    expect(tooFew).toBeInstanceOf(CoreError);
+    expect(tooFew).toMatchObject({ kind: 'input', message: 'the cloud has 20 points, too few for the neighbour count k = 30: every point needs k others' });
+    const nan = Float64Array.from(small.positions);
+    nan[4] = NaN;
+    expect(() => core.openCloud({ positions: nan, normals: null }, { neighbours: 5 })).toThrow(new CoreError('point 1 has a non-finite coordinate'));
+    expect(() => core.openCloud(small, { neighbours: 2 })).toThrow(new CoreError('option neighbours must be between 3 and 256, got 2'));
+  });
+});

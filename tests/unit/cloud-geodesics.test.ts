@@ -1,13 +1,19 @@
 // CSCD-PC's per-cloud object through the real WASM module: its facts, heat-method distances on the
-// tufted triangulation (held to the exact geodesics of the mesh the bob cloud was sampled from) and
-// bad input.
-import { readFileSync } from 'node:fs';
+// tufted triangulation (held to the exact geodesics of the mesh the bob cloud was sampled from), bad
+// input, and the CLI's info and distance on a cloud.
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { CoreError, loadCoreNode, type Cloud, type Core } from '../../lib/core/node.ts';
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
 import { fixture, sharedMesh } from '../paths.ts';
-import { spherePoints } from './support/clouds.ts';
+import { cscd } from './support/cli.ts';
+import { cloudPly, spherePoints } from './support/clouds.ts';
 import { readMesh } from './support/meshes.ts';
+
+const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-cloud-'));
+afterAll(() => rmSync(tmp, { recursive: true, force: true }));
 
 function readCloud(name: string): ParsedCloud {
   const shape = parseShape(new Uint8Array(readFileSync(fixture('clouds', name))), name);
@@ -131,5 +137,38 @@ describe('bad clouds', () => {
     nan[4] = NaN;
     expect(() => core.openCloud({ positions: nan, normals: null }, { neighbours: 5 })).toThrow(new CoreError('point 1 has a non-finite coordinate'));
     expect(() => core.openCloud(small, { neighbours: 2 })).toThrow(new CoreError('option neighbours must be between 3 and 256, got 2'));
+  });
+
+  it('are refused by the CLI in one line, as meshes are', async () => {
+    const file = path.join(tmp, 'small.ply');
+    writeFileSync(file, cloudPly(Array.from({ length: 20 }, (_, i) => Array.from(small.positions.subarray(3 * i, 3 * i + 3))), null, 'ascii', 'float'));
+    expect(await cscd('info', file)).toEqual({
+      status: 1, stdout: '', stderr: 'cscd: the cloud has 20 points, too few for the neighbour count k = 30: every point needs k others\n',
+    });
+    expect(await cscd('info', file, '--neighbours', '2')).toMatchObject({ status: 2, stderr: "cscd: --neighbours must be an integer from 3 to 256, got '2'\n" });
+    expect(JSON.parse((await cscd('info', file, '--neighbours', '8')).stdout)).toMatchObject({ points: 20, neighbours: 8 });
+    expect(await cscd('info', sharedMesh('bob.ply'), '--neighbours', '8')).toMatchObject({ status: 2, stderr: `cscd: --neighbours does not apply to ${sharedMesh('bob.ply')}: it is a mesh\n` });
+  });
+});
+
+describe('the CLI on a cloud', () => {
+  it('info prints its facts', async () => {
+    const file = fixture('clouds', 'bob_subsample.ply');
+    const result = await cscd('info', file);
+    expect(result.status, result.stderr).toBe(0);
+    const report = JSON.parse(result.stdout);
+    expect(report).toMatchObject({ file, format: 'ply', points: 1948, neighbours: 30, components: 1, normalsFromFile: true, warnings: [], repairs: [] });
+    expect(report.bboxDiagonal).toBeCloseTo(2.5516, 3);
+    expect(report.meanSpacing).toBeCloseTo(bobCloud.facts.meanSpacing, 12);
+  });
+
+  it('distance writes one distance per point of the file, 0 at the source', async () => {
+    const result = await cscd('distance', fixture('clouds', 'bob_subsample.ply'), '--source', '100');
+    expect(result.status, result.stderr).toBe(0);
+    const { distance } = JSON.parse(result.stdout) as { distance: number[] };
+    expect(distance).toEqual(Array.from(bobCloud.distance(100)));
+    expect(await cscd('distance', fixture('clouds', 'bob_subsample.ply'), '--source', '1948')).toMatchObject({
+      status: 2, stderr: "cscd: --source must be a point index from 0 to 1947, got '1948'\n",
+    });
   });
 });

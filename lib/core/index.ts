@@ -271,6 +271,10 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
     return this.unwrap(this.live().distance(source));
   }
 
+  referenceDistance(source: number): Float64Array {
+    return this.unwrap(this.live().referenceDistance(source));
+  }
+
   distanceFromPoints(sources: number[]): Float64Array {
     return this.unwrap(this.live().distanceFromPoints(Float64Array.from(sources)));
   }

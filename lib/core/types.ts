@@ -309,6 +309,8 @@ export interface Cloud {
   readonly facts: CloudFacts;
   /** Geodesic distance (heat method) from one point to every point; Infinity in other components. */
   distance(source: number): Float64Array;
+  /** Test-only: the same by geometry-central's PointCloudHeatSolver, which `distance` replaces (docs/pointcloud.md). */
+  referenceDistance(source: number): Float64Array;
   /** Test-only: geodesic distance from the nearest of several points to every point. */
   distanceFromPoints(sources: number[]): Float64Array;
   /** Frees the WASM-side object; the Cloud must not be used afterwards. */

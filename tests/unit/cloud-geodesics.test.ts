@@ -102,6 +102,10 @@ describe('geodesic distance on a cloud', () => {
     expect(sum / count).toBeLessThan(0.035);
   });
 
+  it('is geometry-central’s PointCloudHeatSolver’s, to the last bit', () => {
+    for (const source of [0, 1000]) expect(bobCloud.distance(source)).toEqual(bobCloud.referenceDistance(source));
+  });
+
   it('from several points is near the least of their distances, near 0 at each', () => {
     const sources = [0, 700, 1400];
     const both = bobCloud.distanceFromPoints(sources);

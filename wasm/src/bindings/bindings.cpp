@@ -9,6 +9,8 @@
 #include "mesh/surface.h"
 #include "pointcloud/cloud.h"
 
+#include "geometrycentral/pointcloud/point_cloud_heat_solver.h"
+
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -340,6 +342,17 @@ public:
     return reportingErrors([&] { return toFloat64Array(cloud->geodesics().fromPoint(checkedPoint(point))); });
   }
 
+  // Test-only (tests/unit/cloud-geodesics.test.ts): geometry-central's PointCloudHeatSolver, the
+  // solver CloudGeodesics replaces, which it is held to; built on first use.
+  val referenceDistance(double point) {
+    return reportingErrors([&] {
+      const size_t source = checkedPoint(point);
+      if (!reference) reference = std::make_unique<geometrycentral::pointcloud::PointCloudHeatSolver>(cloud->cloud(), cloud->geometry());
+      const Eigen::VectorXd distance = reference->computeDistance(cloud->cloud().point(source)).toVector();
+      return toFloat64Array(std::vector<double>(distance.data(), distance.data() + distance.size()));
+    });
+  }
+
   // Test-only: the multi-source solve that regions will use inside the core.
   val distanceFromPoints(const val& points) {
     return reportingErrors([&] {
@@ -354,6 +367,7 @@ private:
   size_t checkedPoint(double point) const { return checkedIndex(point, cloud->pointCount(), "point", "points", "cloud"); }
 
   std::unique_ptr<Cloud> cloud;
+  std::unique_ptr<geometrycentral::pointcloud::PointCloudHeatSolver> reference;
   std::optional<Failure> failure;
 };
 
@@ -380,5 +394,6 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("error", &CloudBinding::error)
       .function("facts", &CloudBinding::facts)
       .function("distance", &CloudBinding::distance)
+      .function("referenceDistance", &CloudBinding::referenceDistance)
       .function("distanceFromPoints", &CloudBinding::distanceFromPoints);
 }

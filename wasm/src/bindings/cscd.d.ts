@@ -30,6 +30,7 @@ export interface CloudHandle {
   error(): CoreFailure | null;
   facts(): unknown;
   distance(point: number): Float64Array | CoreFailure;
+  referenceDistance(point: number): Float64Array | CoreFailure;
   distanceFromPoints(points: Float64Array): Float64Array | CoreFailure;
   delete(): void;
 }

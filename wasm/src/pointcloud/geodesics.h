@@ -14,10 +14,12 @@ namespace cscd {
 // geometry-central's PointCloudHeatSolver. Prefactored once per cloud; each query costs two
 // back-substitutions.
 //
-// geometry-central's HeatMethodDistanceSolver does the work, run directly on the tufted geometry
-// without its robust option: PointCloudHeatSolver turns that option on, which copies the tufted
-// triangulation, builds a tufted cover of it again (twice the faces, for every query) and flips it to
-// Delaunay once more, all on a triangulation that is already a Delaunay tufted cover.
+// geometry-central's HeatMethodDistanceSolver does the work, on the tufted geometry itself: the same
+// numbers as PointCloudHeatSolver's, to the last bit (tests/unit/cloud-geodesics.test.ts), whose robust
+// option copies the tufted triangulation and mollifies and flips it again to no effect. Not using that
+// class keeps one triangulation in memory, factors when the cloud is opened (as a mesh's Surface does),
+// solves each component on its own, and leaves the scalar solver alone when a vector heat solver is
+// added later (PointCloudHeatSolver rebuilds and refactors it then).
 class CloudGeodesics {
 public:
   // tufted: the cloud's tufted triangulation, vertex i being point i; pointComponent: the connected

@@ -46,12 +46,15 @@ const PAGE_BYTES = 65536;
 const CORE_MAXIMUM_MB = 4096;
 const CORE_INITIAL_MB = 64;
 
+/** What shrinks each kind of shape when the core runs out of memory. */
+const SHRINK = { mesh: 'decimate it to fewer faces', 'point cloud': 'subsample it to fewer points' } as const;
+
 /** A failed allocation (kind memory) gets the limit that was hit and what to do about it. */
-function unwrapper(memoryLimitMB: number): Unwrap {
+function unwrapper(memoryLimitMB: number, shape: keyof typeof SHRINK): Unwrap {
   return <T>(result: T | CoreFailure): T => {
     if (!isFailure(result)) return result;
     if (result.coreError === 'memory') {
-      throw new CoreError(`out of memory: the mesh needs more than ${memoryLimitMB} MB; decimate it to fewer faces and try again`, 'memory');
+      throw new CoreError(`out of memory: the ${shape} needs more than ${memoryLimitMB} MB; ${SHRINK[shape]} and try again`, 'memory');
     }
     throw new CoreError(result.message, result.coreError);
   };
@@ -281,11 +284,17 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
 }
 
 class WasmCore implements Core {
+  private readonly unwrap: Unwrap;
+  private readonly unwrapCloud: Unwrap;
+
   constructor(
     private readonly module: CscdModule,
-    private readonly unwrap: Unwrap,
+    memoryLimitMB: number,
     private readonly memory: WebAssembly.Memory,
-  ) {}
+  ) {
+    this.unwrap = unwrapper(memoryLimitMB, 'mesh');
+    this.unwrapCloud = unwrapper(memoryLimitMB, 'point cloud');
+  }
 
   memoryMB(): number {
     return this.memory.buffer.byteLength / (1024 * 1024);
@@ -309,7 +318,7 @@ class WasmCore implements Core {
   }
 
   openCloud(cloud: CloudArrays, options: Partial<CloudOptions> = {}): Cloud {
-    return new WasmCloud(opened(new this.module.Cloud(cloud.positions, cloud.normals, options), this.unwrap), this.unwrap);
+    return new WasmCloud(opened(new this.module.Cloud(cloud.positions, cloud.normals, options), this.unwrapCloud), this.unwrapCloud);
   }
 
   openRefinedSurface(mesh: MeshArrays): RefinedSurface {
@@ -357,5 +366,5 @@ export async function createCore(wasm: ArrayBuffer | Uint8Array | WebAssembly.Mo
     printErr: (text) => console.warn(`[cscd core] ${text}`),
   };
   const module = await createCscdModule(moduleSettings);
-  return new WasmCore(module, unwrapper(limit), memory);
+  return new WasmCore(module, limit, memory);
 }

@@ -7,7 +7,7 @@ import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { CoreError, loadCoreNode, type Cloud, type Core } from '../../lib/core/node.ts';
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
-import { fixture, sharedMesh } from '../paths.ts';
+import { fixture, sharedData, sharedMesh } from '../paths.ts';
 import { cscd } from './support/cli.ts';
 import { cloudPly, spherePoints } from './support/clouds.ts';
 import { readMesh } from './support/meshes.ts';
@@ -15,9 +15,9 @@ import { readMesh } from './support/meshes.ts';
 const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-cloud-'));
 afterAll(() => rmSync(tmp, { recursive: true, force: true }));
 
-function readCloud(name: string): ParsedCloud {
-  const shape = parseShape(new Uint8Array(readFileSync(fixture('clouds', name))), name);
-  if (shape.kind !== 'cloud') throw new Error(`${name} holds a mesh`);
+function readCloud(file: string): ParsedCloud {
+  const shape = parseShape(new Uint8Array(readFileSync(file)), path.basename(file));
+  if (shape.kind !== 'cloud') throw new Error(`${file} holds a mesh`);
   return shape;
 }
 
@@ -35,7 +35,7 @@ function nearest(queries: ArrayLike<number>, points: ArrayLike<number>): Int32Ar
 }
 
 let core: Core;
-const bob = readCloud('bob_subsample.ply');
+const bob = readCloud(fixture('clouds', 'bob_subsample.ply'));
 let bobCloud: Cloud;
 beforeAll(async () => {
   core = await loadCoreNode();
@@ -54,7 +54,7 @@ describe('a cloud opened in the core', () => {
   });
 
   it('has the facts of the GEL armadillo (6488 points, PCA normals), with the k asked for', () => {
-    const cloud = core.openCloud(readCloud('armadillo_gel_pts.ply'), { neighbours: 12 });
+    const cloud = core.openCloud(readCloud(fixture('clouds', 'armadillo_gel_pts.ply')), { neighbours: 12 });
     try {
       expect(cloud.facts).toMatchObject({ points: 6488, neighbours: 12, normalsFromFile: false });
       expect(cloud.facts.bboxDiagonal).toBeCloseTo(229.2, 1);
@@ -141,6 +141,17 @@ describe('bad clouds', () => {
     nan[4] = NaN;
     expect(() => core.openCloud({ positions: nan, normals: null }, { neighbours: 5 })).toThrow(new CoreError('point 1 has a non-finite coordinate'));
     expect(() => core.openCloud(small, { neighbours: 2 })).toThrow(new CoreError('option neighbours must be between 3 and 256, got 2'));
+  });
+
+  it('that do not fit in the memory limit are refused as out of memory, and the core goes on', async () => {
+    // 20K points take about 140 MB (docs/pointcloud.md).
+    const small = await loadCoreNode({ memoryLimitMB: 64 });
+    expect(() => small.openCloud(readCloud(path.join(sharedData, 'pointclouds', 'bob_clean.ply')))).toThrow(
+      new CoreError('out of memory: the point cloud needs more than 64 MB; subsample it to fewer points and try again', 'memory'),
+    );
+    const cloud = small.openCloud(bob);
+    expect(cloud.facts.points).toBe(1948);
+    cloud.dispose();
   });
 
   it('are refused by the CLI in one line, as meshes are', async () => {

@@ -47,8 +47,9 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   PointData<Vector3> positions(*pointCloud);
   for (size_t p = 0; p < n; p++) positions[p] = Vector3{arrays.positions[3 * p], arrays.positions[3 * p + 1], arrays.positions[3 * p + 2]};
 
-  // Normals only orient each point's tangent plane, where its neighbours are triangulated; their sign is
-  // not trusted (PCA normals have none, and files flip some): the tufted cover does not depend on it.
+  // Normals only give each point the tangent plane its neighbours are triangulated in; their sign is not
+  // trusted (PCA normals have none, and files flip some), and the tufted cover needs none: flipping half
+  // of them moves distances by 0.03% of the diagonal on average (tests/unit/cloud-geodesics.test.ts).
   // A file's normals are used when it has them, else geometry-central's PCA normals of the k neighbours.
   if (arrays.normals.empty()) {
     cloudGeometry = std::make_unique<PointPositionGeometry>(*pointCloud, positions);

@@ -11,9 +11,10 @@ namespace cscd {
 
 CloudGeodesics::CloudGeodesics(EdgeLengthGeometry& tufted, std::vector<int> pointComponent_)
     : tuftedMesh(tufted.mesh), pointComponent(std::move(pointComponent_)) {
-  // Every triangle stands in up to three local triangulations and the tufted cover doubles them, so
-  // the mass matrix is about 6 times the area, and the Laplacian as much: the heat and Poisson systems
-  // are scaled as a whole, which changes no distance (and t = h² needs no correction).
+  // Every triangle stands in up to three local triangulations and the tufted cover doubles them, so the
+  // mass matrix is about 6 times the area; the Laplacian, summed over the same triangles, grows about as
+  // much. So t = h² keeps its meaning (the heat system is scaled nearly as a whole), and the Poisson
+  // step, whose two sides grow alike, is unchanged: the accuracy is a mesh's (docs/pointcloud.md).
   solver = std::make_unique<HeatMethodDistanceSolver>(tufted, 1.0, false);
 }
 

@@ -1,11 +1,12 @@
-/** What every CLI command shares: its description for help and parsing, errors, mesh input. */
+/** What every CLI command shares: its description for help and parsing, errors, mesh and point-cloud input. */
 import { readFile } from 'node:fs/promises';
 import { loadCoreNode } from '../lib/core/node.ts';
-import type { Core, MeshArrays, RefinedSurface } from '../lib/core/types.ts';
-import { parseMesh, type ParsedMesh } from '../lib/io/index.ts';
+import type { Cloud, CloudArrays, CloudOptions, Core, MeshArrays, RefinedSurface } from '../lib/core/types.ts';
+import { checkCloud } from '../lib/io/cloud-check.ts';
+import { parseMesh, parseShape, type ParsedCloud, type ParsedMesh } from '../lib/io/index.ts';
 import { repairMesh } from '../lib/io/repair.ts';
 import { decimate } from '../lib/mesh/decimate.ts';
-import { DECIMATE_TARGET, FACE_LIMIT, sizeWarning } from '../lib/mesh/limits.ts';
+import { cloudSizeWarning, DECIMATE_TARGET, FACE_LIMIT, sizeWarning } from '../lib/mesh/limits.ts';
 
 export interface OptionSpec {
   type: 'string' | 'boolean';
@@ -84,18 +85,52 @@ export interface InputMesh extends ParsedMesh {
   vertexMap: Int32Array;
 }
 
-/**
- * Reads, parses and repairs a mesh file; parser warnings and repairs go to stderr unless the command
- * reports them itself.
- */
-export async function readMesh(file: string, io: CliIo, { printWarnings = true } = {}): Promise<InputMesh> {
-  const parsed = parseMesh(await readBytes(file), file);
+/** A point-cloud file as every command works on it: parsed, then checked (lib/io/cloud-check.ts). */
+export interface InputCloud extends ParsedCloud {
+  /** What the checks did, one sentence each; empty when the cloud is as in the file. */
+  repairs: string[];
+  /** Index of every point of the file in the checked cloud, -1 for removed ones. */
+  pointMap: Int32Array;
+}
+
+interface ReadSettings {
+  /** Parser warnings and repairs go to stderr unless the command reports them itself. */
+  printWarnings?: boolean;
+}
+
+function reportInput(file: string, warnings: string[], repairs: string[], io: CliIo, { printWarnings = true }: ReadSettings): void {
+  if (!printWarnings) return;
+  for (const warning of warnings) io.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
+  for (const repair of repairs) io.stderr.write(`cscd: repaired: ${repair}\n`);
+}
+
+function inputMesh(parsed: ParsedMesh, file: string, io: CliIo, settings: ReadSettings): InputMesh {
   const { mesh, repairs, vertexMap } = repairMesh(parsed);
-  if (printWarnings) {
-    for (const warning of parsed.warnings) io.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
-    for (const repair of repairs) io.stderr.write(`cscd: repaired: ${repair}\n`);
-  }
+  reportInput(file, parsed.warnings, repairs, io, settings);
   return { ...parsed, ...mesh, repairs, vertexMap };
+}
+
+/** Reads, parses and repairs a mesh file (a point cloud is refused, saying so). */
+export async function readMesh(file: string, io: CliIo, settings: ReadSettings = {}): Promise<InputMesh> {
+  return inputMesh(parseMesh(await readBytes(file), file), file, io, settings);
+}
+
+/**
+ * Reads a mesh or a point-cloud file, as the file turns out to hold: a mesh parsed and repaired as
+ * readMesh does, a cloud parsed and checked for `neighbours` neighbours per point.
+ */
+export async function readShape(file: string, io: CliIo, neighbours: number, settings: ReadSettings = {}): Promise<InputMesh | InputCloud> {
+  const parsed = parseShape(await readBytes(file), file);
+  if (parsed.kind === 'mesh') return inputMesh(parsed, file, io, settings);
+  const { cloud, repairs, pointMap } = checkCloud(parsed, neighbours);
+  reportInput(file, parsed.warnings, repairs, io, settings);
+  return { ...cloud, repairs, pointMap };
+}
+
+/** Refuses flags that do nothing for this kind of shape (--decimate on a cloud, --neighbours on a mesh). */
+export function refuseFlags(values: OptionValues, flags: string[], file: string, shape: 'mesh' | 'point cloud'): void {
+  const given = flags.find((flag) => values[flag] !== undefined);
+  if (given !== undefined) throw new UsageError(`--${given} does not apply to ${file}: it is a ${shape}`);
 }
 
 /** --decimate K, for the commands that take it (the page's "Decimate to K faces"). */
@@ -120,6 +155,13 @@ export function decimateIfAsked<M extends MeshArrays>(mesh: M, values: OptionVal
   const seconds = ((performance.now() - started) / 1000).toFixed(1);
   io.stderr.write(`cscd: decimated ${file} from ${faces} to ${decimated.triangles.length / 3} faces in ${seconds} s\n`);
   return { ...mesh, ...decimated, decimatedFrom: faces };
+}
+
+/** Opens a point cloud in the core, first warning on stderr when it is above the size limit (lib/mesh/limits.ts). */
+export async function openCloud(cloud: CloudArrays, options: CloudOptions, file: string, io: CliIo): Promise<Cloud> {
+  const warning = cloudSizeWarning(cloud.positions.length / 3);
+  if (warning) io.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
+  return (await getCore()).openCloud(cloud, options);
 }
 
 /**

@@ -6,7 +6,7 @@
 import { readFileSync } from 'node:fs';
 import { parseArgs, type ParseArgsConfig } from 'node:util';
 import { CoreError } from '../lib/core/types.ts';
-import { MESH_EXTENSIONS, MeshFormatError } from '../lib/io/index.ts';
+import { CLOUD_EXTENSIONS, MESH_EXTENSIONS, MeshFormatError } from '../lib/io/index.ts';
 import { SkeletonFormatError } from '../lib/io/skeleton.ts';
 import { UsageError, discardCore, type CliIo, type Command, type Output } from './command.ts';
 import { distance } from './commands/distance.ts';
@@ -115,6 +115,7 @@ function overview(): string {
     ]),
     '',
     `Meshes: ${MESH_EXTENSIONS.join(' ')} (the format is checked against the content).`,
+    `Point clouds (info and distance): ${CLOUD_EXTENSIONS.join(' ')} (PLY and OBJ files without faces, point lists).`,
     'Errors: one line "cscd: <message>" on stderr; exit code 2 for usage errors, 1 otherwise.',
   ].join('\n');
 }

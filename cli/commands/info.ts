@@ -1,17 +1,46 @@
+import type { CloudOptions } from '../../lib/core/types.ts';
 import { refinementOf } from '../../lib/mesh/refine.ts';
-import { decimateIfAsked, decimateOption, getCore, readMesh, type Command } from '../command.ts';
+import { decimateIfAsked, decimateOption, getCore, openCloud, readShape, refuseFlags, type CliIo, type Command, type InputCloud } from '../command.ts';
+import { cloudFlagSpecs, cloudOptionsFromFlags } from './separator.ts';
 
 export const info: Command = {
   name: 'info',
-  summary: 'print facts about a mesh (counts, topology, bounding box) as JSON',
-  args: ['<mesh>'],
-  options: { decimate: decimateOption },
-  details: 'Prints {file, format, vertices, faces, edges, components, boundaryLoops, genus, ..., warnings, repairs}: the facts of\nthe mesh after the repairs listed in `repairs` (see README, Accepted input and repairs), and after\n--decimate (then `decimatedFrom` is the face count before). `refined` is what the computing commands do to a\ncoarse mesh first (lib/mesh/refine.ts: {fromFaces, toFaces, levels}), or null.',
+  summary: 'print facts about a mesh (counts, topology, bounding box) or a point cloud as JSON',
+  args: ['<mesh|cloud>'],
+  options: { decimate: decimateOption, ...cloudFlagSpecs() },
+  details: [
+    'Prints {file, format, vertices, faces, edges, components, boundaryLoops, genus, ..., warnings, repairs}: the facts of',
+    'the mesh after the repairs listed in `repairs` (see README, Accepted input and repairs), and after',
+    '--decimate (then `decimatedFrom` is the face count before). `refined` is what the computing commands do to a',
+    'coarse mesh first (lib/mesh/refine.ts: {fromFaces, toFaces, levels}), or null.',
+    'For a point cloud, {file, format, points, neighbours, components, bboxMin, bboxMax, bboxDiagonal, meanSpacing,',
+    'normalsFromFile, warnings, repairs}: the facts of the cloud opened with --neighbours K (see docs/pointcloud.md).',
+  ].join('\n'),
   async run([file], values, io) {
-    const mesh = decimateIfAsked(await readMesh(file, io, { printWarnings: false }), values, file, io);
+    const options = cloudOptionsFromFlags(values);
+    const shape = await readShape(file, io, options.neighbours, { printWarnings: false });
+    if (shape.kind === 'cloud') {
+      refuseFlags(values, ['decimate'], file, 'point cloud');
+      return printReport(io, await cloudReport(file, shape, options, io));
+    }
+    refuseFlags(values, Object.keys(cloudFlagSpecs()), file, 'mesh');
+    const mesh = decimateIfAsked(shape, values, file, io);
     const facts = (await getCore()).inspect(mesh);
     const decimated = mesh.decimatedFrom === null ? {} : { decimatedFrom: mesh.decimatedFrom };
-    const report = { file, format: mesh.format, ...facts, ...decimated, refined: refinementOf(facts), warnings: mesh.warnings, repairs: mesh.repairs };
-    io.stdout.write(`${JSON.stringify(report, null, 2)}\n`);
+    printReport(io, { file, format: mesh.format, ...facts, ...decimated, refined: refinementOf(facts), warnings: mesh.warnings, repairs: mesh.repairs });
   },
 };
+
+/** A cloud's facts come from opening it: its neighbours and triangulation give the components and the spacing. */
+async function cloudReport(file: string, shape: InputCloud, options: CloudOptions, io: CliIo): Promise<object> {
+  const cloud = await openCloud(shape, options, file, io);
+  try {
+    return { file, format: shape.format, ...cloud.facts, warnings: shape.warnings, repairs: shape.repairs };
+  } finally {
+    cloud.dispose();
+  }
+}
+
+function printReport(io: CliIo, report: object): void {
+  io.stdout.write(`${JSON.stringify(report, null, 2)}\n`);
+}

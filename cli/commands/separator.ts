@@ -1,8 +1,10 @@
 import { writeFile } from 'node:fs/promises';
 import {
   cliFlag,
+  defaultCloudOptions,
   defaultOptions,
   defaultRunSettings,
+  MESH_OPTIONS,
   NUMBER_TEXT,
   OPTIONS,
   optionProblem,
@@ -13,7 +15,7 @@ import {
   type SettingSpec,
 } from '../../lib/core/options.ts';
 import { random } from '../../lib/core/random.ts';
-import type { MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
+import type { CloudOptions, MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
 import { UsageError, openSolver, readMesh, type Command, type OptionSpec as CliOptionSpec, type OptionValues } from '../command.ts';
 
 export type Point = [number, number, number];
@@ -56,23 +58,43 @@ function parseFlag(spec: OptionSpec | SettingSpec, given: string | boolean, flag
   throw new UsageError(`--${flag} ${notANumber ? 'must be a number' : optionProblem(spec, NaN)}, got '${text}'`);
 }
 
+/** The flags of these options as parseArgs specs. */
+function flagSpecsOf(specs: readonly OptionSpec[]): Record<string, CliOptionSpec> {
+  return Object.fromEntries(specs.map((o) => [cliFlag(o), flagSpec(o)]));
+}
+
 /**
- * The option flags as parseArgs specs (lib/core/options.ts), e.g. for scripts that take the same
+ * The mesh option flags as parseArgs specs (lib/core/options.ts), e.g. for scripts that take the same
  * options as the command; with `pipeline: false`, only those of `cscd separator`.
  */
 export function optionFlagSpecs({ pipeline = true } = {}): Record<string, CliOptionSpec> {
-  return Object.fromEntries(OPTIONS.filter((o) => pipeline || o.commands === 'all').map((o) => [cliFlag(o), flagSpec(o)]));
+  return flagSpecsOf(MESH_OPTIONS.filter((o) => pipeline || o.commands === 'all'));
 }
 
-/** The full Options of a command line: defaults, overridden by the flags that were given. */
-export function optionsFromFlags(values: OptionValues): Options {
-  const options: Record<string, unknown> = { ...defaultOptions };
-  for (const spec of OPTIONS) {
+/** The point-cloud-only option flags (`--neighbours`), for the commands that open a cloud. */
+export function cloudFlagSpecs(): Record<string, CliOptionSpec> {
+  return flagSpecsOf(OPTIONS.filter((o) => o.shapes === 'cloud'));
+}
+
+/** `defaults`, overridden by the flags that were given of these options. */
+function valuesFromFlags(specs: readonly OptionSpec[], defaults: object, values: OptionValues): Record<string, unknown> {
+  const options: Record<string, unknown> = { ...defaults };
+  for (const spec of specs) {
     const flag = cliFlag(spec);
     const value = values[flag];
     if (value !== undefined && !Array.isArray(value)) options[spec.key] = parseFlag(spec, value, flag);
   }
-  return options as unknown as Options;
+  return options;
+}
+
+/** The full Options of a command line on a mesh: defaults, overridden by the flags that were given. */
+export function optionsFromFlags(values: OptionValues): Options {
+  return valuesFromFlags(MESH_OPTIONS, defaultOptions, values) as unknown as Options;
+}
+
+/** The full CloudOptions of a command line on a point cloud: defaults, overridden by the flags that were given. */
+export function cloudOptionsFromFlags(values: OptionValues): CloudOptions {
+  return valuesFromFlags(OPTIONS, defaultCloudOptions, values) as unknown as CloudOptions;
 }
 
 /** The run settings' flags (`--workers`), for the commands that can run stage 1 on a pool. */

@@ -1,10 +1,21 @@
 // The CSCD core for TypeScript callers (CLI, worker, tests): a thin layer over the embind module that
 // turns its failures into CoreError (of their kind) and frees WASM objects through dispose().
-import createCscdModule, { type CoreFailure, type CscdModule, type CscdModuleOptions, type PipelineHandle, type SurfaceHandle } from '../../build/wasm/cscd.js';
+import createCscdModule, {
+  type CloudHandle,
+  type CoreFailure,
+  type CscdModule,
+  type CscdModuleOptions,
+  type PipelineHandle,
+  type SurfaceHandle,
+} from '../../build/wasm/cscd.js';
 import { refine, refinedPoint, refinementOf, skeletonForInput } from '../mesh/refine.ts';
 import {
   CoreError,
   type CandidateRecord,
+  type Cloud,
+  type CloudArrays,
+  type CloudFacts,
+  type CloudOptions,
   type Core,
   type Evaluation,
   type MeshArrays,
@@ -35,25 +46,58 @@ const PAGE_BYTES = 65536;
 const CORE_MAXIMUM_MB = 4096;
 const CORE_INITIAL_MB = 64;
 
+/** What shrinks each kind of shape when the core runs out of memory. */
+const SHRINK = { mesh: 'decimate it to fewer faces', 'point cloud': 'subsample it to fewer points' } as const;
+
 /** A failed allocation (kind memory) gets the limit that was hit and what to do about it. */
-function unwrapper(memoryLimitMB: number): Unwrap {
+function unwrapper(memoryLimitMB: number, shape: keyof typeof SHRINK): Unwrap {
   return <T>(result: T | CoreFailure): T => {
     if (!isFailure(result)) return result;
     if (result.coreError === 'memory') {
-      throw new CoreError(`out of memory: the mesh needs more than ${memoryLimitMB} MB; decimate it to fewer faces and try again`, 'memory');
+      throw new CoreError(`out of memory: the ${shape} needs more than ${memoryLimitMB} MB; ${SHRINK[shape]} and try again`, 'memory');
     }
     throw new CoreError(result.message, result.coreError);
   };
 }
 
-class WasmPipeline implements Pipeline {
-  private handle: PipelineHandle | null;
+/** An object just made in the core (its constructor cannot throw into JS): it, or its failure thrown as a CoreError. */
+function opened<H extends { error(): CoreFailure | null; delete(): void }>(handle: H, unwrap: Unwrap): H {
+  const error = handle.error();
+  if (error) {
+    handle.delete();
+    unwrap(error);
+  }
+  return handle;
+}
 
+/** A wrapper that owns an object of the core: dispose() frees it once, and later calls are refused. */
+abstract class Owner<H extends { delete(): void }> {
+  private handle: H | null;
+
+  constructor(
+    handle: H,
+    private readonly what: string,
+  ) {
+    this.handle = handle;
+  }
+
+  dispose(): void {
+    this.handle?.delete();
+    this.handle = null;
+  }
+
+  protected live(): H {
+    if (!this.handle) throw new CoreError(`this ${this.what} has been disposed`);
+    return this.handle;
+  }
+}
+
+class WasmPipeline extends Owner<PipelineHandle> implements Pipeline {
   constructor(
     handle: PipelineHandle,
     private readonly unwrap: Unwrap,
   ) {
-    this.handle = handle;
+    super(handle, 'pipeline');
   }
 
   step(sources: number): PipelineProgress {
@@ -75,28 +119,17 @@ class WasmPipeline implements Pipeline {
   finish(): Skeleton {
     return this.unwrap(this.live().finish()) as Skeleton;
   }
-
-  dispose(): void {
-    this.handle?.delete();
-    this.handle = null;
-  }
-
-  private live(): PipelineHandle {
-    if (!this.handle) throw new CoreError('this pipeline has been disposed');
-    return this.handle;
-  }
 }
 
-class WasmSurface implements Surface {
+class WasmSurface extends Owner<SurfaceHandle> implements Surface {
   readonly facts: MeshFacts;
-  private handle: SurfaceHandle | null;
 
   constructor(
     handle: SurfaceHandle,
     private readonly module: CscdModule,
     private readonly unwrap: Unwrap,
   ) {
-    this.handle = handle;
+    super(handle, 'surface');
     this.facts = handle.facts() as MeshFacts;
   }
 
@@ -113,13 +146,7 @@ class WasmSurface implements Surface {
   }
 
   pipeline(options: Partial<Options> = {}): Pipeline {
-    const handle = new this.module.Pipeline(this.live(), options);
-    const error = handle.error();
-    if (error) {
-      handle.delete();
-      this.unwrap(error);
-    }
-    return new WasmPipeline(handle, this.unwrap);
+    return new WasmPipeline(opened(new this.module.Pipeline(this.live(), options), this.unwrap), this.unwrap);
   }
 
   skeleton(options: Partial<Options> = {}): Skeleton {
@@ -130,16 +157,6 @@ class WasmSurface implements Surface {
     const faces = Uint32Array.from(points, (p) => p.face);
     const barycentric = Float64Array.from(points.flatMap((p) => p.barycentric));
     return this.unwrap(this.live().distanceFromPoints(faces, barycentric));
-  }
-
-  dispose(): void {
-    this.handle?.delete();
-    this.handle = null;
-  }
-
-  private live(): SurfaceHandle {
-    if (!this.handle) throw new CoreError('this surface has been disposed');
-    return this.handle;
   }
 }
 
@@ -242,12 +259,42 @@ class WasmRefinedSurface implements RefinedSurface {
   }
 }
 
+class WasmCloud extends Owner<CloudHandle> implements Cloud {
+  readonly facts: CloudFacts;
+
+  constructor(
+    handle: CloudHandle,
+    private readonly unwrap: Unwrap,
+  ) {
+    super(handle, 'cloud');
+    this.facts = handle.facts() as CloudFacts;
+  }
+
+  distance(source: number): Float64Array {
+    return this.unwrap(this.live().distance(source));
+  }
+
+  referenceDistance(source: number): Float64Array {
+    return this.unwrap(this.live().referenceDistance(source));
+  }
+
+  distanceFromPoints(sources: number[]): Float64Array {
+    return this.unwrap(this.live().distanceFromPoints(Float64Array.from(sources)));
+  }
+}
+
 class WasmCore implements Core {
+  private readonly unwrap: Unwrap;
+  private readonly unwrapCloud: Unwrap;
+
   constructor(
     private readonly module: CscdModule,
-    private readonly unwrap: Unwrap,
+    memoryLimitMB: number,
     private readonly memory: WebAssembly.Memory,
-  ) {}
+  ) {
+    this.unwrap = unwrapper(memoryLimitMB, 'mesh');
+    this.unwrapCloud = unwrapper(memoryLimitMB, 'point cloud');
+  }
 
   memoryMB(): number {
     return this.memory.buffer.byteLength / (1024 * 1024);
@@ -267,13 +314,11 @@ class WasmCore implements Core {
   }
 
   openSurface(mesh: MeshArrays): Surface {
-    const handle = new this.module.Surface(mesh.positions, mesh.triangles);
-    const error = handle.error();
-    if (error) {
-      handle.delete();
-      this.unwrap(error);
-    }
-    return new WasmSurface(handle, this.module, this.unwrap);
+    return new WasmSurface(opened(new this.module.Surface(mesh.positions, mesh.triangles), this.unwrap), this.module, this.unwrap);
+  }
+
+  openCloud(cloud: CloudArrays, options: Partial<CloudOptions> = {}): Cloud {
+    return new WasmCloud(opened(new this.module.Cloud(cloud.positions, cloud.normals, options), this.unwrapCloud), this.unwrapCloud);
   }
 
   openRefinedSurface(mesh: MeshArrays): RefinedSurface {
@@ -321,5 +366,5 @@ export async function createCore(wasm: ArrayBuffer | Uint8Array | WebAssembly.Mo
     printErr: (text) => console.warn(`[cscd core] ${text}`),
   };
   const module = await createCscdModule(moduleSettings);
-  return new WasmCore(module, unwrapper(limit), memory);
+  return new WasmCore(module, limit, memory);
 }

@@ -5,7 +5,7 @@
  * by tests/unit/options.test.ts) are derived from it; the core declares the same defaults and ranges in
  * C++ (wasm/src/cscd/options.h), and the same test holds the two to each other through the bindings.
  */
-import type { Options } from './types.ts';
+import type { CloudOptions, Options } from './types.ts';
 
 /** Auto mode of `n` (wasm/src/cscd/pipeline.h): sampling stops when this share of the surface is near
  * a source or a separator, or when the last `window` sources added less than `minGain`; never past `max`. */
@@ -14,23 +14,35 @@ export const AUTO_N = Object.freeze({ covered: 0.99, window: 20, minGain: 0.005,
 /** The auto-N rule in words, for help texts and docs. */
 export const AUTO_N_RULE = `until ${AUTO_N.covered * 100}% of the surface is near a source or a separator, or ${AUTO_N.window} more sources add less than ${AUTO_N.minGain * 100}% (at most ${AUTO_N.max})`;
 
-interface Common<K extends keyof Options> {
+interface Common<K extends keyof CloudOptions> {
   key: K;
   /** CLI flag, kebab-case of the key; a switch that is on by default is turned off by --no-<flag>. */
   flag: string;
-  /** separator: stage 1, from one source (a change re-runs the source); skeleton: the whole shape only. */
-  stage: 'separator' | 'skeleton';
-  /** The CLI commands that take the flag: every one that runs stage 1, or `skeleton` only. */
+  /**
+   * The CLI commands that take the flag: every one that runs stage 1 (a point-cloud option: every one
+   * that opens a cloud), or `skeleton` only.
+   */
   commands: 'all' | 'skeleton';
-  default: Options[K];
+  default: CloudOptions[K];
   /** One line: what it changes, in which unit. */
   help: string;
 }
+/** An option of meshes and point clouds alike. */
+interface EveryShape {
+  shapes: 'all';
+  /** separator: stage 1, from one source (a change re-runs the source); skeleton: the whole shape only. */
+  stage: 'separator' | 'skeleton';
+}
+/** An option of point clouds only: how the cloud is made into a surface (a change opens it again, then re-runs everything). */
+interface CloudOnly {
+  shapes: 'cloud';
+  stage: 'open';
+}
 export type OptionSpec =
-  | (Common<'target'> & { kind: 'choice'; /** each value with its label in the panel */ choices: Readonly<Record<Options['target'], string>> })
-  | (Common<'sphere'> & { kind: 'switch' })
-  | (Common<'seed' | 'pruneDepth' | 'roundSize'> & { kind: 'integer'; range: readonly [number, number]; placeholder: string })
-  | (Common<'angleThreshold' | 'laplacianThreshold' | 'pruneLengthFactor'> & {
+  | (Common<'target'> & EveryShape & { kind: 'choice'; /** each value with its label in the panel */ choices: Readonly<Record<Options['target'], string>> })
+  | (Common<'sphere'> & EveryShape & { kind: 'switch' })
+  | (Common<'seed' | 'pruneDepth' | 'roundSize'> & EveryShape & { kind: 'integer'; range: readonly [number, number]; placeholder: string })
+  | (Common<'angleThreshold' | 'laplacianThreshold' | 'pruneLengthFactor'> & EveryShape & {
       kind: 'number';
       range: readonly [number, number];
       placeholder: string;
@@ -38,50 +50,61 @@ export type OptionSpec =
       step: number;
       slider?: true;
     })
-  | (Common<'n'> & { kind: 'count'; range: readonly [number, number]; placeholder: string });
+  | (Common<'n'> & EveryShape & { kind: 'count'; range: readonly [number, number]; placeholder: string })
+  | (Common<'neighbours'> & CloudOnly & { kind: 'integer'; range: readonly [number, number]; placeholder: string });
+
+/** The options a mesh takes: all but the point-cloud ones. */
+export type MeshOptionSpec = Extract<OptionSpec, { shapes: 'all' }>;
 
 export const OPTIONS: readonly OptionSpec[] = Object.freeze([
   {
-    key: 'target', flag: 'target', stage: 'separator', commands: 'all', kind: 'choice', default: 'euclid',
+    key: 'target', flag: 'target', shapes: 'all', stage: 'separator', commands: 'all', kind: 'choice', default: 'euclid',
     choices: { euclid: 'space', geodesic: 'surface' },
     help: 'target: the cut-locus point nearest the source in space (euclid, the paper) or along the surface (geodesic)',
   },
   {
-    key: 'sphere', flag: 'sphere', stage: 'separator', commands: 'all', kind: 'switch', default: true,
+    key: 'sphere', flag: 'sphere', shapes: 'all', stage: 'separator', commands: 'all', kind: 'switch', default: true,
     help: 'keep the shortened loop inside a sphere around the source reaching the farthest point of the approximate loop (paper Sec. 4.1.6)',
   },
   {
-    key: 'seed', flag: 'seed', stage: 'skeleton', commands: 'all', kind: 'integer', default: 1, range: [0, 0xffffffff], placeholder: 'S',
+    key: 'seed', flag: 'seed', shapes: 'all', stage: 'skeleton', commands: 'all', kind: 'integer', default: 1, range: [0, 0xffffffff], placeholder: 'S',
     help: 'seed of every random choice (the sources drawn); same seed, same skeleton',
   },
   {
-    key: 'angleThreshold', flag: 'angle-threshold', stage: 'separator', commands: 'all', kind: 'number', default: 1.75, range: [0, Math.PI],
+    key: 'angleThreshold', flag: 'angle-threshold', shapes: 'all', stage: 'separator', commands: 'all', kind: 'number', default: 1.75, range: [0, Math.PI],
     placeholder: 'X', step: 0.01, slider: true,
     help: 'cut locus: minimum turn of the distance gradient at a ridge, radians in [0, π]',
   },
   {
-    key: 'laplacianThreshold', flag: 'laplacian-threshold', stage: 'separator', commands: 'all', kind: 'number', default: 0.2, range: [0, 1e6],
+    key: 'laplacianThreshold', flag: 'laplacian-threshold', shapes: 'all', stage: 'separator', commands: 'all', kind: 'number', default: 0.2, range: [0, 1e6],
     placeholder: 'X', step: 0.01,
     help: 'cut locus: minimum ridge sharpness, −(mean edge length)·(Laplacian of the distance), unitless',
   },
   {
-    key: 'pruneDepth', flag: 'prune-depth', stage: 'separator', commands: 'all', kind: 'integer', default: 3, range: [0, 1000], placeholder: 'N',
+    key: 'pruneDepth', flag: 'prune-depth', shapes: 'all', stage: 'separator', commands: 'all', kind: 'integer', default: 3, range: [0, 1000], placeholder: 'N',
     help: 'cut locus: leaf branches with fewer edges than this are pruned',
   },
   {
-    key: 'n', flag: 'n', stage: 'skeleton', commands: 'skeleton', kind: 'count', default: 'auto', range: [1, 100000], placeholder: 'N|auto',
+    key: 'n', flag: 'n', shapes: 'all', stage: 'skeleton', commands: 'skeleton', kind: 'count', default: 'auto', range: [1, 100000], placeholder: 'N|auto',
     help: `number of sources (separators tried), or auto: draw sources ${AUTO_N_RULE}`,
   },
   {
-    key: 'pruneLengthFactor', flag: 'prune-length-factor', stage: 'skeleton', commands: 'skeleton', kind: 'number', default: 3, range: [0, 1000],
+    key: 'pruneLengthFactor', flag: 'prune-length-factor', shapes: 'all', stage: 'skeleton', commands: 'skeleton', kind: 'number', default: 3, range: [0, 1000],
     placeholder: 'X', step: 0.5,
     help: 'loops shorter than this many mean edge lengths enclose no feature and are pruned (paper Sec. 4.2.2)',
   },
   {
-    key: 'roundSize', flag: 'round-size', stage: 'skeleton', commands: 'skeleton', kind: 'integer', default: 8, range: [1, 256], placeholder: 'K',
+    key: 'roundSize', flag: 'round-size', shapes: 'all', stage: 'skeleton', commands: 'skeleton', kind: 'integer', default: 8, range: [1, 256], placeholder: 'K',
     help: 'sources drawn at once in stage 1, their separators computed together (in parallel by workers): the skeleton depends on it, not on the number of workers',
   },
+  {
+    key: 'neighbours', flag: 'neighbours', shapes: 'cloud', stage: 'open', commands: 'all', kind: 'integer', default: 30, range: [3, 256], placeholder: 'K',
+    help: 'point clouds only: neighbours of each point (k of the k-nearest-neighbour search) that its local triangulation, and so the distances, are built from',
+  },
 ] satisfies OptionSpec[]);
+
+/** The options of meshes, in their declared order (every front end that opens only meshes shows these). */
+export const MESH_OPTIONS: readonly MeshOptionSpec[] = Object.freeze(OPTIONS.filter((o): o is MeshOptionSpec => o.shapes === 'all'));
 
 /**
  * Settings of a run: how it is computed, never what it gives. Unlike the options they reach neither
@@ -112,9 +135,14 @@ export const SETTINGS: readonly SettingSpec[] = Object.freeze([WORKERS]);
 
 export const defaultRunSettings: Readonly<RunSettings> = Object.freeze({ workers: WORKERS.default });
 
-/** Defaults of every option. */
+/** Defaults of every option of a mesh. */
 export const defaultOptions: Readonly<Options> = Object.freeze(
-  Object.fromEntries(OPTIONS.map((o) => [o.key, o.default])) as unknown as Options,
+  Object.fromEntries(MESH_OPTIONS.map((o) => [o.key, o.default])) as unknown as Options,
+);
+
+/** Defaults of every option of a point cloud: all of them. */
+export const defaultCloudOptions: Readonly<CloudOptions> = Object.freeze(
+  Object.fromEntries(OPTIONS.map((o) => [o.key, o.default])) as unknown as CloudOptions,
 );
 
 type NumericKey = Extract<OptionSpec, { range: readonly [number, number] }>['key'];
@@ -153,8 +181,8 @@ export function cliFlag(spec: OptionSpec): string {
 }
 
 /** An option's value from its text (String(value) writes it); null when it is not acceptable. */
-export function parseOptionText<K extends keyof Options>(spec: Extract<OptionSpec, { key: K }>, text: string): Options[K] | null {
-  return parseSpecText(spec as OptionSpec, text) as Options[K] | null;
+export function parseOptionText<K extends keyof CloudOptions>(spec: Extract<OptionSpec, { key: K }>, text: string): CloudOptions[K] | null {
+  return parseSpecText(spec as OptionSpec, text) as CloudOptions[K] | null;
 }
 
 /** A run setting's value from its text; null when it is not acceptable. */
@@ -176,6 +204,6 @@ export function parseSpecText(spec: OptionSpec | SettingSpec, text: string): unk
 export function optionTable(): string {
   const flag = (o: OptionSpec) =>
     o.kind === 'switch' ? `\`--${cliFlag(o)}\`` : o.kind === 'choice' ? `\`--${o.flag} ${Object.keys(o.choices).join('\\|')}\`` : `\`--${o.flag} ${o.placeholder.replace('|', '\\|')}\``;
-  const rows = OPTIONS.map((o) => `| ${flag(o)} | \`${o.key}\` | \`${String(o.default)}\` | ${o.stage === 'separator' ? 'stage 1' : 'whole shape'} | ${o.help.replaceAll('|', '\\|')} |`);
+  const rows = OPTIONS.map((o) => `| ${flag(o)} | \`${o.key}\` | \`${String(o.default)}\` | ${{ separator: 'stage 1', skeleton: 'whole shape', open: 'opening a cloud' }[o.stage]} | ${o.help.replaceAll('|', '\\|')} |`);
   return ['| CLI flag | option | default | stage | meaning |', '|---|---|---|---|---|', ...rows].join('\n');
 }

@@ -6,10 +6,34 @@ export interface MeshArrays {
   triangles: Uint32Array;
 }
 
+/** The arrays of a point cloud, which the cloud checks, the subsampling and the core work on. */
+export interface CloudArrays {
+  /** x y z of each point, interleaved. */
+  positions: Float64Array;
+  /** nx ny nz of each point, interleaved; null when the file has no normals (not all three of them). */
+  normals: Float32Array | null;
+}
+
 /** A point on the surface: a face of the input mesh and barycentric coordinates in it. */
 export interface SurfacePoint {
   face: number;
   barycentric: [number, number, number];
+}
+
+/** Facts about a point cloud, once opened (Core.openCloud). */
+export interface CloudFacts {
+  points: number;
+  /** k of the k-nearest-neighbour search (the `neighbours` option). */
+  neighbours: number;
+  /** Connected components of the tufted triangulation built from the neighbours: distances stay within one. */
+  components: number;
+  bboxMin: [number, number, number];
+  bboxMax: [number, number, number];
+  bboxDiagonal: number;
+  /** Mean edge length of the tufted triangulation (its edges join neighbouring points): the counterpart of a mesh's meanEdgeLength. */
+  meanSpacing: number;
+  /** Whether the normals are the file's (else they are estimated from the neighbours, by PCA). */
+  normalsFromFile: boolean;
 }
 
 /** Facts about a mesh, computed without requiring it to be manifold. */
@@ -73,6 +97,15 @@ export interface Options {
   pruneLengthFactor: number;
   /** Sources drawn at once in stage 1; their separators are computed together (by a pool of workers). */
   roundSize: number;
+}
+
+/**
+ * The options of a point cloud: every option, and those only clouds have (lib/core/options.ts,
+ * `shapes: 'cloud'`), which say how the cloud is made into a surface to compute on.
+ */
+export interface CloudOptions extends Options {
+  /** Neighbours of each point (k of the kNN search) that its local triangulation is built from. */
+  neighbours: number;
 }
 
 /** Why stage 1 produced no separator for a source ('ok' when it did). */
@@ -268,6 +301,22 @@ export interface RefinedSurface extends Surface {
   readonly refined: Refinement | null;
 }
 
+/**
+ * Per-cloud state kept in the core (CSCD-PC): the k nearest neighbours, the tufted intrinsic
+ * triangulation built from them and its prefactored geodesic solver.
+ */
+export interface Cloud {
+  readonly facts: CloudFacts;
+  /** Geodesic distance (heat method) from one point to every point; Infinity in other components. */
+  distance(source: number): Float64Array;
+  /** Test-only: the same by geometry-central's PointCloudHeatSolver, which `distance` replaces (docs/pointcloud.md). */
+  referenceDistance(source: number): Float64Array;
+  /** Test-only: geodesic distance from the nearest of several points to every point. */
+  distanceFromPoints(sources: number[]): Float64Array;
+  /** Frees the WASM-side object; the Cloud must not be used afterwards. */
+  dispose(): void;
+}
+
 /** A curve skeleton from any tool, as the evaluation takes it. */
 export interface SkeletonInput {
   /** Node positions, xyz per node. */
@@ -314,6 +363,11 @@ export interface Core {
    * CSCD-M), with results per vertex of `mesh`: what every consumer that computes on a user's mesh uses.
    */
   openRefinedSurface(mesh: MeshArrays): RefinedSurface;
+  /**
+   * Builds the per-cloud state (of a cloud that passed checkCloud, lib/io/cloud-check.ts); only the
+   * cloud-only options matter to it. Throws CoreError when the cloud cannot be processed.
+   */
+  openCloud(cloud: CloudArrays, options?: Partial<CloudOptions>): Cloud;
   /** The reconstruction error of a skeleton against a mesh (the mesh need not be manifold). */
   evaluate(mesh: MeshArrays, skeleton: SkeletonInput): Evaluation;
   /**

@@ -1,3 +1,8 @@
+import type { CloudArrays } from '../core/types.ts';
+
+/** The arrays of a point cloud: declared with the core's types, which take them. */
+export type { CloudArrays };
+
 /** Mesh file formats read by CSCD Studio (CLI and page alike). */
 export type MeshFormat = 'obj' | 'ply' | 'stl' | 'off' | 'glb';
 
@@ -13,14 +18,6 @@ export interface ParsedMesh {
   format: MeshFormat;
   /** Things the parser did that the user should know (polygons triangulated, STL vertices merged...). */
   warnings: string[];
-}
-
-/** The arrays of a point cloud, which the cloud checks and the subsampling work on. */
-export interface CloudArrays {
-  /** x y z of each point, interleaved. */
-  positions: Float64Array;
-  /** nx ny nz of each point, interleaved; null when the file has no normals (not all three of them). */
-  normals: Float32Array | null;
 }
 
 export interface ParsedCloud extends CloudArrays {

@@ -25,8 +25,8 @@ describe('cscd', () => {
   it('--help lists the commands and exits 0', async () => {
     const result = await cscd('--help');
     expect(result.status).toBe(0);
-    expect(result.stdout).toMatch(/info <mesh>/);
-    expect(result.stdout).toMatch(/distance <mesh> \[options\]/);
+    expect(result.stdout).toMatch(/info <mesh\|cloud>/);
+    expect(result.stdout).toMatch(/distance <mesh\|cloud> \[options\]/);
     expect(result.stdout).toMatch(/separator <mesh> \[options\]/);
     expect((await cscd('help', 'distance')).stdout).toMatch(/--source V\s+source vertex index/);
   });
@@ -92,7 +92,7 @@ describe('cscd', () => {
 
   it('reports usage errors with exit code 2', async () => {
     expect(expectError(await cscd('frobnicate'), 2)).toBe("unknown command 'frobnicate' (see cscd --help)");
-    expect(expectError(await cscd('info'), 2)).toMatch(/^info: expected <mesh>, got 0 arguments/);
+    expect(expectError(await cscd('info'), 2)).toMatch(/^info: expected <mesh\|cloud>, got 0 arguments/);
     expect(expectError(await cscd('info', 'a.ply', '--bogus'), 2)).toMatch(/^info: Unknown option '--bogus'/);
   });
 

@@ -4,8 +4,8 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core } from '../../lib/core/node.ts';
-import { AUTO_N, defaultOptions, optionRanges, OPTIONS, optionTable, parseOptionText } from '../../lib/core/options.ts';
-import { optionFlagSpecs, optionsFromFlags } from '../../cli/commands/separator.ts';
+import { AUTO_N, defaultCloudOptions, defaultOptions, MESH_OPTIONS, optionRanges, OPTIONS, optionTable, parseOptionText } from '../../lib/core/options.ts';
+import { cloudFlagSpecs, cloudOptionsFromFlags, optionFlagSpecs, optionsFromFlags } from '../../cli/commands/separator.ts';
 import { readUrl } from '../../web/src/ui/url-state.ts';
 import { repoRoot } from '../paths.ts';
 
@@ -17,13 +17,13 @@ beforeAll(async () => {
 describe('the option specification', () => {
   it('has the core’s defaults, ranges and auto-N constants', () => {
     const limits = core.optionLimits();
-    expect(limits.defaults).toEqual({ ...defaultOptions });
+    expect(limits.defaults).toEqual({ ...defaultCloudOptions });
     expect(limits.ranges).toEqual(Object.fromEntries(Object.entries(optionRanges).map(([k, r]) => [k, [...r]])));
     expect(limits.autoN).toEqual({ ...AUTO_N });
   });
 
   it('gives every option a CLI flag of its own, kebab-case of its name', () => {
-    const flags = Object.keys(optionFlagSpecs());
+    const flags = Object.keys({ ...optionFlagSpecs(), ...cloudFlagSpecs() });
     expect(flags).toHaveLength(OPTIONS.length);
     for (const o of OPTIONS) expect(o.flag).toBe(o.key.replace(/[A-Z]/g, (c) => `-${c.toLowerCase()}`));
     expect(flags).toContain('no-sphere');
@@ -32,9 +32,17 @@ describe('the option specification', () => {
   it('reads each default back from its text, in the CLI and in the address bar', () => {
     for (const o of OPTIONS) expect(parseOptionText(o, String(o.default))).toBe(o.default);
     expect(optionsFromFlags({})).toEqual({ ...defaultOptions });
-    const changed = '#' + OPTIONS.map((o) => `${o.key}=${o.kind === 'switch' ? !o.default : o.kind === 'choice' ? 'geodesic' : o.kind === 'count' ? 7 : o.range[0] === o.default ? o.range[0] + 1 : o.range[0]}`).join('&');
+    expect(cloudOptionsFromFlags({})).toEqual({ ...defaultCloudOptions });
+    expect(cloudOptionsFromFlags({ neighbours: '12' }).neighbours).toBe(12);
+    // The page opens meshes only: its address bar holds the mesh options.
+    const changed = '#' + MESH_OPTIONS.map((o) => `${o.key}=${o.kind === 'switch' ? !o.default : o.kind === 'choice' ? 'geodesic' : o.kind === 'count' ? 7 : o.range[0] === o.default ? o.range[0] + 1 : o.range[0]}`).join('&');
     const options = readUrl(changed).options;
-    for (const o of OPTIONS) expect(options[o.key], o.key).not.toBe(o.default);
+    for (const o of MESH_OPTIONS) expect(options[o.key], o.key).not.toBe(o.default);
+  });
+
+  it('keeps the point-cloud options out of a mesh’s options (and so out of its skeleton file)', () => {
+    expect(Object.keys(defaultOptions)).not.toContain('neighbours');
+    expect(defaultCloudOptions).toEqual({ ...defaultOptions, neighbours: 30 });
   });
 
   it('is the option table of the README and docs/cli.md', () => {

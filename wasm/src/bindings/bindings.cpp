@@ -1,4 +1,5 @@
-// The core's module: the mesh functions (inspect, evaluate), the Surface of CSCD-M and its Pipeline.
+// The core's module: the mesh functions (inspect, evaluate), the Surface of CSCD-M and its Pipeline, and
+// the Cloud of CSCD-PC.
 // Arrays come in as typed arrays (one copy in); conversions out and failures as values: convert.h.
 #include "bindings/convert.h"
 #include "bindings/pipeline_binding.h"
@@ -6,6 +7,9 @@
 #include "mesh/realization.h"
 #include "mesh/separator.h"
 #include "mesh/surface.h"
+#include "pointcloud/cloud.h"
+
+#include "geometrycentral/pointcloud/point_cloud_heat_solver.h"
 
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
@@ -28,6 +32,16 @@ MeshArrays toArrays(const val& positions, const val& triangles) {
   arrays.positions = convertJSArrayToNumberVector<double>(positions);
   arrays.triangles = convertJSArrayToNumberVector<uint32_t>(triangles);
   return arrays;
+}
+
+// An element index given from JS (a double), refused unless it is a whole number below `count`.
+size_t checkedIndex(double index, size_t count, const char* element, const char* plural, const char* shape) {
+  if (!(index >= 0) || index != std::floor(index) || index >= double(count)) {
+    std::ostringstream msg;
+    msg << element << " " << index << " is out of range (the " << shape << " has " << count << " " << plural << ")";
+    throw InputError(msg.str());
+  }
+  return size_t(index);
 }
 
 val toArray3(const std::array<double, 3>& v) {
@@ -283,16 +297,77 @@ public:
   }
 
 private:
-  size_t checkedVertex(double vertex) const {
-    if (!(vertex >= 0) || vertex != std::floor(vertex) || vertex >= double(surface->vertexCount())) {
-      std::ostringstream msg;
-      msg << "vertex " << vertex << " is out of range (the mesh has " << surface->vertexCount() << " vertices)";
-      throw InputError(msg.str());
-    }
-    return size_t(vertex);
-  }
+  size_t checkedVertex(double vertex) const { return checkedIndex(vertex, surface->vertexCount(), "vertex", "vertices", "mesh"); }
 
   std::unique_ptr<Surface> surface;
+  std::optional<Failure> failure;
+};
+
+CloudArrays toCloudArrays(const val& positions, const val& normals) {
+  CloudArrays arrays;
+  arrays.positions = convertJSArrayToNumberVector<double>(positions);
+  if (!normals.isNull() && !normals.isUndefined()) arrays.normals = convertJSArrayToNumberVector<double>(normals);
+  return arrays;
+}
+
+val toVal(const CloudFacts& f) {
+  val o = val::object();
+  o.set("points", f.points);
+  o.set("neighbours", f.neighbours);
+  o.set("components", f.components);
+  o.set("bboxMin", toArray3(f.bboxMin));
+  o.set("bboxMax", toArray3(f.bboxMax));
+  o.set("bboxDiagonal", f.bboxDiagonal);
+  o.set("meanSpacing", f.meanSpacing);
+  o.set("normalsFromFile", f.normalsFromFile);
+  return o;
+}
+
+// The Cloud of CSCD-PC, opened with the options (only `neighbours` matters to it).
+class CloudBinding {
+public:
+  CloudBinding(const val& positions, const val& normals, const val& options) {
+    try {
+      cloud = std::make_unique<Cloud>(toCloudArrays(positions, normals), toOptions(options).neighbours);
+    } catch (...) {
+      failure = failureOf(std::current_exception());
+    }
+  }
+
+  val error() const { return failure ? toVal(*failure) : val::null(); }
+
+  val facts() const { return cloud ? toVal(cloud->facts()) : val::null(); }
+
+  val distance(double point) {
+    return reportingErrors([&] { return toFloat64Array(cloud->geodesics().fromPoint(checkedPoint(point))); });
+  }
+
+  // Test-only (tests/unit/cloud-geodesics.test.ts): geometry-central's PointCloudHeatSolver, the
+  // solver CloudGeodesics replaces, which it is held to; built on first use.
+  val referenceDistance(double point) {
+    return reportingErrors([&] {
+      const size_t source = checkedPoint(point);
+      if (!reference) reference = std::make_unique<geometrycentral::pointcloud::PointCloudHeatSolver>(cloud->cloud(), cloud->geometry());
+      const Eigen::VectorXd distance = reference->computeDistance(cloud->cloud().point(source)).toVector();
+      return toFloat64Array(std::vector<double>(distance.data(), distance.data() + distance.size()));
+    });
+  }
+
+  // Test-only: the multi-source solve that regions will use inside the core.
+  val distanceFromPoints(const val& points) {
+    return reportingErrors([&] {
+      std::vector<size_t> sources;
+      for (double p : convertJSArrayToNumberVector<double>(points)) sources.push_back(checkedPoint(p));
+      if (sources.empty()) throw InputError("no source points given");
+      return toFloat64Array(cloud->geodesics().fromPoints(sources));
+    });
+  }
+
+private:
+  size_t checkedPoint(double point) const { return checkedIndex(point, cloud->pointCount(), "point", "points", "cloud"); }
+
+  std::unique_ptr<Cloud> cloud;
+  std::unique_ptr<geometrycentral::pointcloud::PointCloudHeatSolver> reference;
   std::optional<Failure> failure;
 };
 
@@ -314,4 +389,11 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("separator", &SurfaceBinding::separator)
       .function("distanceFromPoints", &SurfaceBinding::distanceFromPoints);
   bindPipeline<MeshRealization, SurfaceBinding>("Pipeline");
+  class_<CloudBinding>("Cloud")
+      .constructor<const val&, const val&, const val&>()
+      .function("error", &CloudBinding::error)
+      .function("facts", &CloudBinding::facts)
+      .function("distance", &CloudBinding::distance)
+      .function("referenceDistance", &CloudBinding::referenceDistance)
+      .function("distanceFromPoints", &CloudBinding::distanceFromPoints);
 }

@@ -54,6 +54,7 @@ Options toOptions(const val& given) {
   }
   options.pruneLengthFactor = number("pruneLengthFactor", options.pruneLengthFactor);
   options.roundSize = int(number("roundSize", options.roundSize));
+  options.neighbours = int(number("neighbours", options.neighbours));
   return options;
 }
 
@@ -69,6 +70,7 @@ val optionLimits() {
   defaults.set("n", d.n == 0 ? val("auto") : val(d.n));
   defaults.set("pruneLengthFactor", d.pruneLengthFactor);
   defaults.set("roundSize", d.roundSize);
+  defaults.set("neighbours", d.neighbours);
   val ranges = val::object();
   for (const OptionRange& range : kOptionRanges) {
     val pair = val::array();

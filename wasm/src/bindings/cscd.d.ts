@@ -26,6 +26,15 @@ export interface PipelineHandle {
   delete(): void;
 }
 
+export interface CloudHandle {
+  error(): CoreFailure | null;
+  facts(): unknown;
+  distance(point: number): Float64Array | CoreFailure;
+  referenceDistance(point: number): Float64Array | CoreFailure;
+  distanceFromPoints(points: Float64Array): Float64Array | CoreFailure;
+  delete(): void;
+}
+
 export interface CscdModule {
   inspect(positions: Float64Array | Float32Array, triangles: Uint32Array): object | CoreFailure;
   evaluate(
@@ -39,6 +48,7 @@ export interface CscdModule {
   optionLimits(): { defaults: Record<string, unknown>; ranges: Record<string, [number, number]>; autoN: Record<string, number> };
   Surface: new (positions: Float64Array | Float32Array, triangles: Uint32Array) => SurfaceHandle;
   Pipeline: new (surface: SurfaceHandle, options: object) => PipelineHandle;
+  Cloud: new (positions: Float64Array, normals: Float32Array | null, options: object) => CloudHandle;
 }
 
 export interface CscdModuleOptions {

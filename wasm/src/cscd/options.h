@@ -25,6 +25,10 @@ struct Options {
   // one at a time (docs/parallel.md, "Choosing roundSize").
   int roundSize = 8;
   double pruneLengthFactor = 3;              // loops shorter than this many mean edge lengths are pruned
+  // Point clouds only: neighbours of each point its local triangulation is built from (k of the kNN
+  // search). 30 is geometry-central's default, which the paper's PotPourri3D point-cloud solver uses;
+  // at least 3, as fewer cannot surround a point with triangles.
+  int neighbours = 30;
 };
 
 // Accepted ranges of the numeric options (inclusive); toOptions in the bindings refuses anything else.
@@ -35,7 +39,7 @@ struct OptionRange {
 constexpr OptionRange kOptionRanges[] = {
     {"seed", 0, 4294967295.0},   {"angleThreshold", 0, M_PI}, {"laplacianThreshold", 0, 1e6},
     {"pruneDepth", 0, 1000},     {"n", 1, 100000},            {"pruneLengthFactor", 0, 1000},
-    {"roundSize", 1, 256},
+    {"roundSize", 1, 256},       {"neighbours", 3, 256},
 };
 
 } // namespace cscd

@@ -6,16 +6,16 @@
  * the user changed, `onSettingsChange` that a setting changed.
  */
 import GUI, { type Controller } from 'lil-gui';
-import { AUTO_N_RULE, defaultOptions, OPTIONS, optionRanges, WORKERS, type OptionSpec, type RunSettings } from '../../../lib/core/options.ts';
+import { AUTO_N_RULE, defaultOptions, MESH_OPTIONS, optionRanges, WORKERS, type MeshOptionSpec, type RunSettings } from '../../../lib/core/options.ts';
 import type { Options } from '../../../lib/core/types.ts';
 
 export type OptionKey = keyof Options;
 
 /** Options of stage 1: a change re-runs the current source (and invalidates the whole-shape result). */
-export const STAGE1_OPTIONS: readonly OptionKey[] = OPTIONS.filter((o) => o.stage === 'separator').map((o) => o.key);
+export const STAGE1_OPTIONS: readonly OptionKey[] = MESH_OPTIONS.filter((o) => o.stage === 'separator').map((o) => o.key);
 
 /** The tooltip of an option: its help, and what a change re-runs. */
-export function optionTooltip(spec: OptionSpec): string {
+export function optionTooltip(spec: MeshOptionSpec): string {
   const help = spec.help.charAt(0).toUpperCase() + spec.help.slice(1);
   return `${help}. Re-runs ${spec.stage === 'separator' ? 'the source' : 'the whole shape'}.`;
 }
@@ -68,7 +68,7 @@ export class ParamsPanel {
     const folders = { separator: gui.addFolder('Stage 1 · one source'), skeleton: gui.addFolder('Stage 2 · whole shape') };
     const changed = (key: OptionKey) => () => this.changed([key]);
     let nController: Controller | null = null;
-    for (const spec of OPTIONS) {
+    for (const spec of MESH_OPTIONS) {
       const folder = folders[spec.stage];
       const tip = optionTooltip(spec);
       switch (spec.kind) {
@@ -114,7 +114,7 @@ export class ParamsPanel {
   get options(): Options {
     const m = this.model;
     const options: Record<string, unknown> = {};
-    for (const spec of OPTIONS) {
+    for (const spec of MESH_OPTIONS) {
       if (spec.kind === 'choice' || spec.kind === 'switch') options[spec.key] = m[spec.key];
       else if (spec.kind === 'count') options.n = m.nAuto ? 'auto' : clamp(m.n, optionRanges.n, true);
       else options[spec.key] = clamp(m[spec.key], spec.range, spec.kind === 'integer');

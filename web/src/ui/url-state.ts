@@ -2,7 +2,7 @@
  * The view in the address bar, so a link restores it: `#mesh=bob&stage=skeleton&source=812&n=40`.
  * Only options and run settings that differ from the defaults are written; anything unreadable is ignored.
  */
-import { defaultOptions, defaultRunSettings, OPTIONS, parseOptionText, parseSettingText, SETTINGS, type RunSettings } from '../../../lib/core/options.ts';
+import { defaultOptions, defaultRunSettings, MESH_OPTIONS, parseOptionText, parseSettingText, SETTINGS, type RunSettings } from '../../../lib/core/options.ts';
 import type { Options } from '../../../lib/core/types.ts';
 import { isStageKey, type StageKey } from '../stage-defs.ts';
 
@@ -18,7 +18,7 @@ export interface ViewState {
 export function readUrl(hash = location.hash): ViewState {
   const params = new URLSearchParams(hash.replace(/^#/, ''));
   const options: Record<string, unknown> = { ...defaultOptions };
-  for (const spec of OPTIONS) {
+  for (const spec of MESH_OPTIONS) {
     const raw = params.get(spec.key);
     const value = raw === null ? null : parseOptionText(spec, raw.trim());
     if (value !== null) options[spec.key] = value;

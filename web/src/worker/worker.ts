@@ -5,7 +5,7 @@
  * costly part on a large mesh) is opened by the first request that needs it.
  */
 import { createCore } from '../../../lib/core/index.ts';
-import { AUTO_N, defaultOptions, OPTIONS } from '../../../lib/core/options.ts';
+import { AUTO_N, defaultOptions, MESH_OPTIONS } from '../../../lib/core/options.ts';
 import { runStage1 } from '../../../lib/core/pool.ts';
 import { poolSize } from '../../../lib/core/pool-size.ts';
 import {
@@ -357,7 +357,7 @@ function postSources(id: number, p: PipelineProgress, notices: readonly string[]
 let pool: PagePool | null = null;
 
 /** The options in their declared order: two runs share a pool when these are the same. */
-const optionsKey = (options: Options) => JSON.stringify(OPTIONS.map((o) => options[o.key]));
+const optionsKey = (options: Options) => JSON.stringify(MESH_OPTIONS.map((o) => options[o.key]));
 
 let separatorWorkersStarted = 0;
 /**

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "pointcloud/geodesics.h"
+
+#include "geometrycentral/pointcloud/point_cloud.h"
+#include "geometrycentral/pointcloud/point_position_geometry.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace cscd {
+
+// A point cloud as it crosses the WASM boundary: xyz per point, and nx ny nz per point or nothing.
+struct CloudArrays {
+  std::vector<double> positions;
+  std::vector<double> normals;
+
+  size_t pointCount() const { return positions.size() / 3; }
+};
+
+// Facts about a cloud once opened (mirrors CloudFacts in lib/core/types.ts).
+struct CloudFacts {
+  size_t points = 0;
+  size_t neighbours = 0; // k of the k-nearest-neighbour search
+  size_t components = 0; // of the tufted triangulation: heat flows within each one only
+  std::array<double, 3> bboxMin{};
+  std::array<double, 3> bboxMax{};
+  double bboxDiagonal = 0;
+  // Mean edge length of the tufted triangulation (its edges join neighbouring points): the cloud's
+  // counterpart of a mesh's mean edge length, and the length scale of the heat method's time step.
+  double meanSpacing = 0;
+  bool normalsFromFile = false;
+};
+
+// Everything CSCD-PC keeps per input cloud, the counterpart of Surface: the points, their k nearest
+// neighbours, the tufted intrinsic triangulation built from them (Sharp & Crane 2020) and the
+// prefactored geodesic solver on it. Built once, then queried for many sources.
+class Cloud {
+public:
+  // Throws InputError when the arrays are not a usable cloud (bad lengths, non-finite values, k + 1 points or fewer).
+  Cloud(const CloudArrays& arrays, int neighbours);
+
+  const CloudFacts& facts() const { return cloudFacts; }
+  size_t pointCount() const { return cloudFacts.points; }
+  // Connected component of every point in the tufted triangulation.
+  const std::vector<int>& pointComponent() const { return component; }
+
+  geometrycentral::pointcloud::PointCloud& cloud() { return *pointCloud; }
+  geometrycentral::pointcloud::PointPositionGeometry& geometry() { return *cloudGeometry; }
+  CloudGeodesics& geodesics() { return *geodesicSolver; }
+
+private:
+  CloudFacts cloudFacts;
+  std::vector<int> component;
+  std::unique_ptr<geometrycentral::pointcloud::PointCloud> pointCloud;
+  std::unique_ptr<geometrycentral::pointcloud::PointPositionGeometry> cloudGeometry;
+  std::unique_ptr<CloudGeodesics> geodesicSolver;
+};
+
+} // namespace cscd

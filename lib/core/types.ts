@@ -20,16 +20,20 @@ export interface SurfacePoint {
   barycentric: [number, number, number];
 }
 
+/** The axis-aligned bounding box of a shape, and its diagonal (the length tolerances are relative to). */
+export interface BoundingBox {
+  bboxMin: [number, number, number];
+  bboxMax: [number, number, number];
+  bboxDiagonal: number;
+}
+
 /** Facts about a point cloud, once opened (Core.openCloud). */
-export interface CloudFacts {
+export interface CloudFacts extends BoundingBox {
   points: number;
   /** k of the k-nearest-neighbour search (the `neighbours` option). */
   neighbours: number;
   /** Connected components of the tufted triangulation built from the neighbours: distances stay within one. */
   components: number;
-  bboxMin: [number, number, number];
-  bboxMax: [number, number, number];
-  bboxDiagonal: number;
   /** Mean edge length of the tufted triangulation (its edges join neighbouring points): the counterpart of a mesh's meanEdgeLength. */
   meanSpacing: number;
   /** Whether the normals are the file's (else they are estimated from the neighbours, by PCA). */
@@ -37,7 +41,7 @@ export interface CloudFacts {
 }
 
 /** Facts about a mesh, computed without requiring it to be manifold. */
-export interface MeshFacts {
+export interface MeshFacts extends BoundingBox {
   vertices: number;
   faces: number;
   edges: number;
@@ -56,9 +60,6 @@ export interface MeshFacts {
   unreferencedVertices: number;
   /** Faces that repeat a vertex or have (near) zero area. */
   degenerateFaces: number;
-  bboxMin: [number, number, number];
-  bboxMax: [number, number, number];
-  bboxDiagonal: number;
   meanEdgeLength: number;
 }
 

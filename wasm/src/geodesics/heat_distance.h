@@ -1,0 +1,46 @@
+#pragma once
+
+#include "geometrycentral/numerical/linear_solvers.h"
+#include "geometrycentral/surface/intrinsic_geometry_interface.h"
+#include "geometrycentral/surface/surface_point.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace cscd {
+
+// Geodesic distance by the heat method (Crane, Weischedel, Wardetzky 2013) on a triangulation known by
+// its edge lengths: a mesh's intrinsic Delaunay triangulation, a cloud's tufted cover. As
+// geometry-central's HeatMethodDistanceSolver computes it (t = mean edge length², the same
+// factorizations, the same sums in the same order, so the same numbers). The two linear systems are
+// factored once and each query costs two back-substitutions; the step between them (normalised heat
+// gradient, its divergence) runs on per-face arrays copied at construction, a third of the query's
+// time in geometry-central's halfedge-container loop. The triangulation must not change afterwards.
+class HeatDistance {
+public:
+  // vertexComponent: connected component of every vertex, so that each component is solved on its own.
+  HeatDistance(geometrycentral::surface::IntrinsicGeometryInterface& geometry, std::vector<int> vertexComponent);
+
+  // Distance from the nearest of several points of the triangulation to every vertex; +infinity in
+  // components without one.
+  std::vector<double> fromPoints(const std::vector<geometrycentral::surface::SurfacePoint>& sources);
+
+private:
+  // One heat-method solve from points of one component.
+  std::vector<double> solve(const std::vector<geometrycentral::surface::SurfacePoint>& sources);
+
+  struct FaceOperators {
+    std::array<size_t, 3> vertex;                        // tail of each halfedge, from face.halfedge()
+    std::array<geometrycentral::Vector2, 3> heatGradient; // next halfedge's vector turned a quarter: times u at `vertex`
+    std::array<geometrycentral::Vector2, 3> halfedge;     // the halfedge's vector in the face
+    std::array<double, 3> cotanWeight;                    // the halfedge's cotan weight
+  };
+
+  geometrycentral::surface::IntrinsicGeometryInterface& geometry;
+  std::vector<int> vertexComponent;
+  std::vector<FaceOperators> faces;
+  std::unique_ptr<geometrycentral::PositiveDefiniteSolver<double>> heatSolver, poissonSolver;
+};
+
+} // namespace cscd

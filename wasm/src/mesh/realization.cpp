@@ -14,8 +14,26 @@ constexpr double kCoverageRadius = 0.03;
 // let the regions on either side touch and form spurious junctions.
 constexpr double kOverlapTolerance = 1.0;
 
+namespace {
+
+Samples vertexSamplesOf(Surface& surface) {
+  Samples samples;
+  auto& geometry = surface.geometry();
+  geometry.requireVertexDualAreas();
+  for (size_t v = 0; v < surface.vertexCount(); v++) {
+    samples.positions.push_back(geometry.vertexPositions[v]);
+    samples.weights.push_back(geometry.vertexDualAreas[v]);
+  }
+  for (auto e : surface.mesh().edges())
+    samples.edges.push_back({uint32_t(e.firstVertex().getIndex()), uint32_t(e.secondVertex().getIndex())});
+  return samples;
+}
+
+} // namespace
+
 MeshRealization::MeshRealization(Surface& surface_, const Options& options_)
-    : surface(surface_), options(options_), sampler(surface_, options_.seed) {}
+    : surface(surface_), options(options_), vertexSamples(vertexSamplesOf(surface_)),
+      sampler(vertexSamples.positions, vertexSamples.weights, surface_.facts().bboxDiagonal, options_.seed) {}
 
 MeshRealization::Candidate MeshRealization::separator(size_t source) {
   SeparatorResult result = computeSeparator(surface, source, options, /*everyAngle=*/false);
@@ -28,7 +46,9 @@ MeshRealization::Candidate MeshRealization::separator(size_t source) {
   candidate.score = result.score;
   candidate.centroidInside = result.centroidInside;
   candidate.points = std::move(result.loopPoints);
-  candidate.reach = sampler.reach(source, candidate.points);
+  std::vector<geometrycentral::surface::SurfacePoint> covered = candidate.points;
+  covered.emplace_back(surface.mesh().vertex(source));
+  candidate.reach = surface.geodesics().fromPoints(covered);
   return candidate;
 }
 
@@ -60,19 +80,6 @@ geometrycentral::Vector3 MeshRealization::separatorNormal(const Candidate& candi
 }
 
 bool MeshRealization::inside(const geometrycentral::Vector3& p) const { return surface.winding()(p) > 0.5; }
-
-const Samples& MeshRealization::samples() {
-  if (!vertexSamples.positions.empty()) return vertexSamples;
-  auto& geometry = surface.geometry();
-  geometry.requireVertexDualAreas();
-  for (size_t v = 0; v < surface.vertexCount(); v++) {
-    vertexSamples.positions.push_back(geometry.vertexPositions[v]);
-    vertexSamples.weights.push_back(geometry.vertexDualAreas[v]);
-  }
-  for (auto e : surface.mesh().edges())
-    vertexSamples.edges.push_back({uint32_t(e.firstVertex().getIndex()), uint32_t(e.secondVertex().getIndex())});
-  return vertexSamples;
-}
 
 void MeshRealization::centre(SkeletonGraph& graph, const Selection<Candidate>& packed) const {
   for (size_t node = 0; node < packed.size(); node++) {

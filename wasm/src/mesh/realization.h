@@ -1,7 +1,7 @@
 #pragma once
 
 #include "cscd/pipeline.h"
-#include "mesh/sampling.h"
+#include "cscd/sampling.h"
 #include "mesh/surface.h"
 
 #include <vector>
@@ -12,8 +12,8 @@ namespace cscd {
 class MeshRealization {
 public:
   // A separator on the mesh: the loop also as points on the surface, where regions and coverage grow
-  // from, and what it covers (SourceSampler::reach: computed with the separator, so that a pool
-  // computes it in parallel; released once covered).
+  // from, and what it covers (the geodesic distance from the source and the loop: computed with the
+  // separator, so that a pool computes it in parallel; released once covered).
   struct Candidate : cscd::Candidate {
     std::vector<geometrycentral::surface::SurfacePoint> points;
     std::vector<double> reach;
@@ -41,7 +41,7 @@ public:
   // path's normal and the path centroid across it, and so do junctions next to such paths.
   void centre(SkeletonGraph& graph, const Selection<Candidate>& packed) const;
   // The vertices, their dual areas and the mesh edges.
-  const Samples& samples();
+  const Samples& samples() const { return vertexSamples; }
   bool inside(const geometrycentral::Vector3& p) const;
   // Radii fitted to the surface around the final skeleton (tubeRadii), the same rule as for other tools'
   // skeletons: the mean distance to a whole region overestimates a long region's tube.
@@ -53,8 +53,8 @@ private:
 
   Surface& surface;
   Options options;
-  SourceSampler sampler;
   Samples vertexSamples;
+  SourceSampler sampler;
 };
 
 using MeshPipeline = Pipeline<MeshRealization>;

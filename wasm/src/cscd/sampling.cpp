@@ -1,19 +1,16 @@
-#include "mesh/sampling.h"
+#include "cscd/sampling.h"
 
 #include <algorithm>
 #include <cmath>
 
 using namespace geometrycentral;
-using namespace geometrycentral::surface;
 
 namespace cscd {
 
-SourceSampler::SourceSampler(Surface& surface_, uint32_t seed)
-    : surface(surface_), rng(seed), distance(surface_.vertexCount(), INFINITY), scale(surface_.facts().bboxDiagonal / 10) {
-  VertexPositionGeometry& geometry = surface.geometry();
-  geometry.requireVertexDualAreas();
-  area.resize(surface.vertexCount());
-  for (size_t v = 0; v < area.size(); v++) totalArea += area[v] = geometry.vertexDualAreas[v];
+SourceSampler::SourceSampler(std::vector<Vector3> positions, std::vector<double> areas, double diagonal, uint32_t seed)
+    : position(std::move(positions)), area(std::move(areas)), rng(seed), distance(area.size(), INFINITY),
+      scale(diagonal / 10) {
+  for (double a : area) totalArea += a;
 }
 
 size_t SourceSampler::next(const std::vector<size_t>& round) {
@@ -21,7 +18,6 @@ size_t SourceSampler::next(const std::vector<size_t>& round) {
     roundSeen = 0;
   } else {
     if (roundSeen == 0) nearRound = distance;
-    const auto& position = surface.geometry().vertexPositions;
     for (; roundSeen < round.size(); roundSeen++) {
       const Vector3 p = position[round[roundSeen]];
       for (size_t v = 0; v < area.size(); v++) nearRound[v] = std::min(nearRound[v], norm(position[v] - p));
@@ -42,12 +38,6 @@ size_t SourceSampler::next(const std::vector<size_t>& round) {
   double u = double((uint64_t(rng()) << 21) ^ uint64_t(rng() >> 11)) / 9007199254740992.0;
   size_t v = size_t(std::upper_bound(cumulative.begin(), cumulative.end(), u * sum) - cumulative.begin());
   return std::min(v, area.size() - 1);
-}
-
-std::vector<double> SourceSampler::reach(size_t source, const std::vector<SurfacePoint>& loop) const {
-  std::vector<SurfacePoint> covered = loop;
-  covered.emplace_back(surface.mesh().vertex(source));
-  return surface.geodesics().fromPoints(covered);
 }
 
 void SourceSampler::cover(const std::vector<double>& reach) {

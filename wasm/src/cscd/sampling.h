@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mesh/surface.h"
+#include "geometrycentral/utilities/vector3.h"
 
 #include <random>
 #include <vector>
@@ -15,31 +15,33 @@ namespace cscd {
 // a diagonal away e^5 - 1 = 147, so far, unexplored features are visited first. Components not yet
 // reached weigh the most. Deterministic for a seed (std::mt19937 is fully specified).
 //
+// The shape is given as its elements (mesh vertices, cloud points) with their positions and areas; the
+// realization measures what a source and its separator cover (its own geodesic distance), so the
+// sampler is the same for every representation.
+//
 // Sources are drawn in rounds whose separators are computed together (Pipeline): a draw also keeps
 // away from the round's earlier sources, whose loops are not known yet (d_i is then the distance to
 // the covered set or the straight distance to those sources, whichever is nearer: no solve, so the
 // draws of a round cost next to nothing), while coverage counts only what is covered.
 class SourceSampler {
 public:
-  SourceSampler(Surface& surface, uint32_t seed);
+  // areas: per element, the surface area it stands for (only ratios matter); diagonal: of the bounding box.
+  SourceSampler(std::vector<geometrycentral::Vector3> positions, std::vector<double> areas, double diagonal, uint32_t seed);
 
   // The next source of a round whose earlier sources are `round` (empty: the round's first draw).
   size_t next(const std::vector<size_t>& round);
 
-  // What a source and its separator's loop (empty if it had none) cover: the geodesic distance from
-  // them, per vertex. A function of the surface alone, so a pool worker computes it with the separator.
-  std::vector<double> reach(size_t source, const std::vector<geometrycentral::surface::SurfacePoint>& loop) const;
-
-  // Marks what `reach` measures as covered.
+  // Marks as covered what `reach` measures: per element, its geodesic distance from a source and its
+  // separator (a function of the shape alone, so a pool worker computes it with the separator).
   void cover(const std::vector<double>& reach);
 
   // Share of the surface area within `radius` of what is covered.
   double coverage(double radius) const;
 
 private:
-  Surface& surface;
-  std::mt19937 rng;
+  std::vector<geometrycentral::Vector3> position;
   std::vector<double> area;
+  std::mt19937 rng;
   std::vector<double> distance; // to the covered set; +infinity before the first source
   std::vector<double> nearRound; // to the covered set or the current round's sources drawn so far
   size_t roundSeen = 0;          // how many of the round's sources nearRound includes

@@ -2,6 +2,7 @@
 
 #include "geometrycentral/utilities/vector3.h"
 
+#include <limits>
 #include <array>
 #include <cstdint>
 #include <set>
@@ -21,5 +22,27 @@ struct Regions {
   std::set<std::array<size_t, 2>> adjacent;  // regions that touch (sorted pairs)
   std::set<std::array<size_t, 3>> junctions; // regions that meet in one place (sorted triples)
 };
+
+constexpr uint32_t kNoRegion = std::numeric_limits<uint32_t>::max();
+
+// The shape's elements as region growing needs them: positions and areas, each element's neighbours
+// (in a fixed order: ties go to the first), the connected component of each, and the triangles that
+// tell which regions touch and where three meet.
+struct ElementGraph {
+  const std::vector<geometrycentral::Vector3>& positions;
+  const std::vector<double>& areas;
+  const std::vector<std::vector<uint32_t>>& neighbours;
+  const std::vector<std::array<uint32_t, 2>>& edges;
+  const std::vector<int>& component;
+  const std::vector<std::array<uint32_t, 3>>& triangles;
+};
+
+// Regions from the distance to the nearest of `separators` separators (+infinity where none reaches)
+// and the elements each separator runs through (`seeds`: its index, kNoRegion elsewhere). Labels flow
+// from the seeds outwards in order of increasing distance (a watershed), each element taking the label
+// of its nearest already-labelled neighbour; every region is connected (a label's smaller pieces join
+// the regions around them); elements that no separator reaches become one region per component.
+Regions growRegions(const ElementGraph& graph, std::vector<double> distance, std::vector<uint32_t> seeds,
+                    size_t separators);
 
 } // namespace cscd

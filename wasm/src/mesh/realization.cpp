@@ -67,7 +67,7 @@ std::vector<std::vector<size_t>> MeshRealization::overlaps(const Selection<Candi
 Regions MeshRealization::regions(const Selection<Candidate>& packed) {
   std::vector<std::vector<geometrycentral::surface::SurfacePoint>> points;
   for (const Candidate* c : packed) points.push_back(c->points);
-  return assignRegions(surface, points);
+  return assignRegions(surface, vertexSamples, points);
 }
 
 geometrycentral::Vector3 MeshRealization::separatorNormal(const Candidate& candidate) const {

@@ -1,8 +1,8 @@
 #include "mesh/realization.h"
 
 #include "evaluate/tube_radii.h"
-#include "mesh/measures.h"
-#include "mesh/overlap.h"
+#include "cscd/measures.h"
+#include "cscd/overlap.h"
 #include "mesh/regions.h"
 #include "mesh/separator.h"
 

@@ -2,7 +2,7 @@
 
 #include "cscd/stage_clock.h"
 #include "mesh/boundary.h"
-#include "mesh/measures.h"
+#include "cscd/measures.h"
 #include "mesh/target.h"
 
 #include <algorithm>

@@ -1,9 +1,8 @@
-#include "mesh/measures.h"
+#include "cscd/measures.h"
 
 #include <cmath>
 
 using namespace geometrycentral;
-using namespace geometrycentral::surface;
 
 namespace cscd {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "geometrycentral/surface/vertex_position_geometry.h"
+#include "geometrycentral/utilities/vector3.h"
 
 #include <array>
 #include <vector>

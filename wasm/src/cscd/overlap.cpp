@@ -1,4 +1,4 @@
-#include "mesh/overlap.h"
+#include "cscd/overlap.h"
 
 #include <algorithm>
 #include <cmath>

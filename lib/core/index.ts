@@ -281,6 +281,10 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
   distanceFromPoints(sources: number[]): Float64Array {
     return this.unwrap(this.live().distanceFromPoints(Float64Array.from(sources)));
   }
+
+  windingNumbers(points: Float64Array): Float64Array {
+    return this.unwrap(this.live().windingNumbers(points));
+  }
 }
 
 class WasmCore implements Core {

@@ -314,6 +314,8 @@ export interface Cloud {
   referenceDistance(source: number): Float64Array;
   /** Test-only: geodesic distance from the nearest of several points to every point. */
   distanceFromPoints(sources: number[]): Float64Array;
+  /** Test-only: the generalised winding number (about 1 inside, 0 outside) at xyz positions, one per point. */
+  windingNumbers(points: Float64Array): Float64Array;
   /** Frees the WASM-side object; the Cloud must not be used afterwards. */
   dispose(): void;
 }

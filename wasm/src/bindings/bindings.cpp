@@ -8,6 +8,7 @@
 #include "mesh/separator.h"
 #include "mesh/surface.h"
 #include "pointcloud/cloud.h"
+#include "pointcloud/winding.h"
 
 #include "geometrycentral/pointcloud/point_cloud_heat_solver.h"
 
@@ -363,11 +364,23 @@ public:
     });
   }
 
+  // Test-only: generalised winding numbers of the cloud's oriented points at the given xyz positions.
+  val windingNumbers(const val& points) {
+    return reportingErrors([&] {
+      if (!winding) winding = std::make_unique<PointWinding>(*cloud);
+      const std::vector<double> xyz = convertJSArrayToNumberVector<double>(points);
+      std::vector<double> numbers;
+      for (size_t i = 0; i + 2 < xyz.size(); i += 3) numbers.push_back((*winding)({xyz[i], xyz[i + 1], xyz[i + 2]}));
+      return toFloat64Array(numbers);
+    });
+  }
+
 private:
   size_t checkedPoint(double point) const { return checkedIndex(point, cloud->pointCount(), "point", "points", "cloud"); }
 
   std::unique_ptr<Cloud> cloud;
   std::unique_ptr<geometrycentral::pointcloud::PointCloudHeatSolver> reference;
+  std::unique_ptr<PointWinding> winding;
   std::optional<Failure> failure;
 };
 
@@ -395,5 +408,6 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("facts", &CloudBinding::facts)
       .function("distance", &CloudBinding::distance)
       .function("referenceDistance", &CloudBinding::referenceDistance)
-      .function("distanceFromPoints", &CloudBinding::distanceFromPoints);
+      .function("distanceFromPoints", &CloudBinding::distanceFromPoints)
+      .function("windingNumbers", &CloudBinding::windingNumbers);
 }

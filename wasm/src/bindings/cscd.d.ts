@@ -32,6 +32,7 @@ export interface CloudHandle {
   distance(point: number): Float64Array | CoreFailure;
   referenceDistance(point: number): Float64Array | CoreFailure;
   distanceFromPoints(points: Float64Array): Float64Array | CoreFailure;
+  windingNumbers(points: Float64Array): Float64Array | CoreFailure;
   delete(): void;
 }
 

@@ -1,0 +1,71 @@
+// The point cloud's inside test (pointcloud/winding.cpp): the generalised winding number of points
+// whose normals it orients itself. Held to the file's outward normals of bob_subsample (sampled from
+// the bob mesh): points moved a little inwards must be inside, a little outwards outside, whatever
+// the normals the cloud is opened with (none: PCA, with no sign; the file's with half of them flipped).
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { loadCoreNode, type Core } from '../../lib/core/node.ts';
+import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
+import { fixture } from '../paths.ts';
+import { spherePoints } from './support/clouds.ts';
+
+function readCloud(file: string): ParsedCloud {
+  const shape = parseShape(new Uint8Array(readFileSync(file)), path.basename(file));
+  if (shape.kind !== 'cloud') throw new Error(`${file} holds a mesh`);
+  return shape;
+}
+
+let core: Core;
+beforeAll(async () => {
+  core = await loadCoreNode();
+});
+
+const bob = readCloud(fixture('clouds', 'bob_subsample.ply'));
+const normals = bob.normals!;
+
+/** Every point moved by `offset` along its outward (file) normal. */
+function moved(offset: number): Float64Array {
+  const q = new Float64Array(bob.positions.length);
+  for (let i = 0; i < q.length; i++) q[i] = bob.positions[i] + offset * normals[i];
+  return q;
+}
+
+/** Share of the points whose winding number falls on the expected side of 1/2. */
+function share(numbers: Float64Array, inside: boolean): number {
+  return numbers.filter((w) => (w > 0.5) === inside).length / numbers.length;
+}
+
+describe('winding numbers of a point cloud', () => {
+  const cases: [string, Float32Array | undefined][] = [
+    ['PCA normals (no sign)', undefined],
+    ['file normals, every other one flipped', normals.map((n, i) => (Math.floor(i / 3) % 2 ? -n : n))],
+  ];
+  it.each(cases)('tell inside from outside on bob_subsample with %s', (_, given) => {
+    const cloud = core.openCloud({ positions: bob.positions, normals: given });
+    try {
+      const offset = 0.01 * cloud.facts.bboxDiagonal;
+      const inwards = cloud.windingNumbers(moved(-offset));
+      const outwards = cloud.windingNumbers(moved(offset));
+      expect(share(inwards, true)).toBeGreaterThan(0.97);
+      expect(share(outwards, false)).toBeGreaterThan(0.97);
+      const far = cloud.windingNumbers(Float64Array.from([10, 10, 10]).map((x) => x * cloud.facts.bboxDiagonal));
+      expect(Math.abs(far[0])).toBeLessThan(0.01);
+    } finally {
+      cloud.dispose();
+    }
+  });
+
+  it('is about 1 at the centre of a sphere cloud and 0 outside it', () => {
+    const sphere = spherePoints(3000, 7);
+    const cloud = core.openCloud({ positions: sphere.positions });
+    try {
+      const [centre, near, outside] = cloud.windingNumbers(Float64Array.from([0, 0, 0, 0.5, 0, 0, 1.5, 0, 0]));
+      expect(centre).toBeCloseTo(1, 1);
+      expect(near).toBeCloseTo(1, 1);
+      expect(Math.abs(outside)).toBeLessThan(0.1);
+    } finally {
+      cloud.dispose();
+    }
+  });
+});

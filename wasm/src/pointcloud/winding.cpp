@@ -1,0 +1,71 @@
+#include "pointcloud/winding.h"
+
+#include <cmath>
+#include <queue>
+
+using namespace geometrycentral;
+using namespace geometrycentral::pointcloud;
+
+namespace cscd {
+
+PointWinding::PointWinding(Cloud& cloud) {
+  PointPositionGeometry& geometry = cloud.geometry();
+  geometry.requireNeighbors();
+  geometry.requireNormals();
+  const size_t n = cloud.pointCount();
+  const PointData<std::vector<Point>>& neighbours = geometry.neighbors->neighbors;
+  position.resize(n);
+  normal.resize(n);
+  area.resize(n);
+  for (size_t p = 0; p < n; p++) {
+    position[p] = geometry.positions[p];
+    normal[p] = geometry.normals[p];
+    double farthest = 0;
+    for (Point q : neighbours[p]) farthest = std::max(farthest, norm(geometry.positions[q] - position[p]));
+    area[p] = M_PI * farthest * farthest / double(neighbours[p].size() + 1);
+  }
+
+  // Prim's tree from the topmost unvisited point, whose outward normal points up; each point takes
+  // the orientation of the tree neighbour it is reached from. Ties in the weight go to the lower index,
+  // so the orientation is the same on every run.
+  std::vector<char> oriented(n, 0);
+  using Entry = std::pair<double, std::pair<size_t, size_t>>; // weight, (point, from)
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
+  auto reach = [&](size_t p) {
+    for (Point q : neighbours[p]) {
+      const size_t i = q.getIndex();
+      if (!oriented[i]) frontier.push({1 - std::abs(dot(normal[p], normal[i])), {i, p}});
+    }
+  };
+  for (size_t left = n; left > 0;) {
+    size_t top = SIZE_MAX;
+    for (size_t p = 0; p < n; p++)
+      if (!oriented[p] && (top == SIZE_MAX || position[p].z > position[top].z)) top = p;
+    if (normal[top].z < 0) normal[top] = -normal[top];
+    oriented[top] = 1;
+    left--;
+    reach(top);
+    while (!frontier.empty()) {
+      const auto [weight, link] = frontier.top();
+      frontier.pop();
+      const auto [p, from] = link;
+      if (oriented[p]) continue;
+      if (dot(normal[p], normal[from]) < 0) normal[p] = -normal[p];
+      oriented[p] = 1;
+      left--;
+      reach(p);
+    }
+  }
+}
+
+double PointWinding::operator()(const Vector3& q) const {
+  double sum = 0;
+  for (size_t i = 0; i < position.size(); i++) {
+    const Vector3 d = position[i] - q;
+    const double r = norm(d);
+    if (r > 0) sum += area[i] * dot(normal[i], d) / (r * r * r);
+  }
+  return sum / (4 * M_PI);
+}
+
+} // namespace cscd

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "pointcloud/cloud.h"
+
+#include <vector>
+
+namespace cscd {
+
+// Inside or outside a point cloud: the generalised winding number of oriented points (Barill et al.
+// 2018, "Fast winding numbers for soups and clouds"), w(q) = sum_i a_i n_i . (x_i - q) / (4 pi |x_i - q|^3),
+// about 1 inside a closed cloud and 0 outside; the counterpart of a mesh's WindingNumber, used by the
+// centroid test (a loop around the outside of a bend has its centroid outside) and by node placement.
+//
+// It needs normals of one orientation, which neither PCA nor every scan gives: they are oriented by
+// propagation along a minimum spanning tree of the neighbour graph weighted by 1 - |n_i . n_j| (Hoppe et
+// al. 1992), from the topmost point of each component, whose outward normal points up. Areas: a_i =
+// pi r_i^2 / (k + 1), r_i the distance to the k-th neighbour (the disc holding the point and its k
+// neighbours, shared among them).
+class PointWinding {
+public:
+  explicit PointWinding(Cloud& cloud);
+
+  double operator()(const geometrycentral::Vector3& q) const;
+
+  // The oriented normals (outward where the cloud is closed).
+  const std::vector<geometrycentral::Vector3>& normals() const { return normal; }
+
+private:
+  std::vector<geometrycentral::Vector3> position;
+  std::vector<geometrycentral::Vector3> normal;
+  std::vector<double> area;
+};
+
+} // namespace cscd

@@ -37,8 +37,8 @@ function share(numbers: Float64Array, inside: boolean): number {
 }
 
 describe('winding numbers of a point cloud', () => {
-  const cases: [string, Float32Array | undefined][] = [
-    ['PCA normals (no sign)', undefined],
+  const cases: [string, Float32Array | null][] = [
+    ['PCA normals (no sign)', null],
     ['file normals, every other one flipped', normals.map((n, i) => (Math.floor(i / 3) % 2 ? -n : n))],
   ];
   it.each(cases)('tell inside from outside on bob_subsample with %s', (_, given) => {
@@ -58,7 +58,7 @@ describe('winding numbers of a point cloud', () => {
 
   it('is about 1 at the centre of a sphere cloud and 0 outside it', () => {
     const sphere = spherePoints(3000, 7);
-    const cloud = core.openCloud({ positions: sphere.positions });
+    const cloud = core.openCloud({ positions: sphere.positions, normals: null });
     try {
       const [centre, near, outside] = cloud.windingNumbers(Float64Array.from([0, 0, 0, 0.5, 0, 0, 1.5, 0, 0]));
       expect(centre).toBeCloseTo(1, 1);

@@ -4,7 +4,7 @@
 // the normals the cloud is opened with (none: PCA, with no sign; the file's with half of them flipped).
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core } from '../../lib/core/node.ts';
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
 import { fixture } from '../paths.ts';

@@ -285,8 +285,8 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
     return this.unwrap(this.live().distanceFromPoints(Float64Array.from(sources)));
   }
 
-  project(points: Polyline): { points: Polyline; normals: Float64Array } {
-    return this.unwrap(this.live().project(points)) as { points: Polyline; normals: Float64Array };
+  project(points: Polyline): { points: Polyline; normals: Float64Array; quadratic: Uint8Array } {
+    return this.unwrap(this.live().project(points)) as { points: Polyline; normals: Float64Array; quadratic: Uint8Array };
   }
 
   shortenLoop(polyline: Polyline, options: { sphere?: Sphere | null; recordEvery?: number } = {}): ShortenedCloudLoop {

@@ -339,8 +339,11 @@ export interface Cloud {
   referenceDistance(source: number): Float64Array;
   /** Test-only: geodesic distance from the nearest of several points to every point. */
   distanceFromPoints(sources: number[]): Float64Array;
-  /** Points (xyz triples) projected on the cloud's MLS surface, and its unit normals there (of arbitrary sign). */
-  project(points: Polyline): { points: Polyline; normals: Float64Array };
+  /**
+   * Points (xyz triples) projected on the cloud's MLS surface, its unit normals there (of arbitrary sign)
+   * and whether the quadratic height was fitted (1; 0: the plane alone, where the cloud is noisy or sparse).
+   */
+  project(points: Polyline): { points: Polyline; normals: Float64Array; quadratic: Uint8Array };
   /**
    * A closed polyline (xyz triples, at least 3 points, last not repeating the first) shortened on the
    * cloud, kept near `sphere` by the paper's penalty; `recordEvery` > 0 keeps iterates for animation.

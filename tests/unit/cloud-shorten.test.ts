@@ -70,7 +70,8 @@ describe('MLS projection on a cloud', () => {
       const radius = 1 + 0.06 * (2 * next() - 1);
       queries.set([radius * r * Math.cos(angle), radius * r * Math.sin(angle), radius * z], 3 * i);
     }
-    const { points, normals } = sphere.project(queries);
+    const { points, normals, quadratic } = sphere.project(queries);
+    expect(quadratic.every((q) => q === 1)).toBe(true);
     const errors = pointsOf(points).map((p) => Math.abs(Math.hypot(...p) - 1));
     // A plane alone would leave points about h^2 / 2 (0.004) inside; the quadratic follows the sphere.
     expect(Math.max(...errors)).toBeLessThan(2e-4);
@@ -79,6 +80,25 @@ describe('MLS projection on a cloud', () => {
       const cosine = (p[0] * normals[3 * k] + p[1] * normals[3 * k + 1] + p[2] * normals[3 * k + 2]) / Math.hypot(...p);
       expect(Math.abs(cosine), `normal ${k}`).toBeGreaterThan(0.999);
     });
+  });
+
+  it('fits the plane alone where the cloud is noisy', () => {
+    // The same sphere with Gaussian noise of a third of a spacing along the normal.
+    const next = random(12);
+    const { positions } = spherePoints(4000, 5);
+    for (let i = 0; i < 4000; i++) {
+      const noise = 1 + 0.02 * Math.sqrt(-2 * Math.log(1 - next())) * Math.cos(2 * Math.PI * next());
+      for (let c = 0; c < 3; c++) positions[3 * i + c] *= noise;
+    }
+    const noisy = core.openCloud({ positions, normals: null });
+    try {
+      const { points, quadratic } = noisy.project(loopOf(100, (t) => [Math.cos(t), Math.sin(t), 0]));
+      expect(quadratic.filter((q) => q === 1).length).toBeLessThan(20);
+      // Still near the sphere: the noise averaged over the neighbourhood, less the plane's h^2 / 2.
+      pointsOf(points).forEach((p) => expect(Math.abs(Math.hypot(...p) - 1)).toBeLessThan(0.02));
+    } finally {
+      noisy.dispose();
+    }
   });
 
   it('leaves points of the surface where they are', () => {

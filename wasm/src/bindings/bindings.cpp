@@ -402,19 +402,23 @@ public:
     });
   }
 
-  // Points (xyz triples) projected on the cloud's MLS surface: {points, normals} (normals of arbitrary sign).
+  // Points (xyz triples) projected on the cloud's MLS surface: {points, normals (of arbitrary sign),
+  // quadratic (1 where the quadratic height was fitted, 0 where the plane alone)}.
   val project(const val& points) {
     return reportingErrors([&] {
       std::vector<geometrycentral::Vector3> projected, normals;
+      std::vector<uint8_t> quadratic;
       for (const auto& p : toPoints(points, "points")) {
         if (!isfinite(p)) throw InputError("a point to project has a non-finite coordinate");
         const MlsPoint onSurface = cloud->mls().project(p);
         projected.push_back(onSurface.position);
         normals.push_back(onSurface.normal);
+        quadratic.push_back(onSurface.quadratic);
       }
       val o = val::object();
       o.set("points", toFloat64Array(projected));
       o.set("normals", toFloat64Array(normals));
+      o.set("quadratic", toTypedArray("Uint8Array", quadratic));
       return o;
     });
   }

@@ -19,11 +19,11 @@ struct MlsPoint {
 // The moving-least-squares surface of a cloud (Levin 2003; the paper cites Fleishman et al. 2005),
 // queried by projecting points onto it. Around the current estimate, the k nearest points are weighted
 // by a Gaussian whose bandwidth h is half the distance to the farthest of them (about 1.5 local
-// spacings at k = 30, so it follows the density); a weighted plane through their weighted centroid
-// (its normal the weighted covariance's least eigenvector) gives a frame, and a weighted quadratic
-// height over that plane refines it where it is well posed. The query is projected on that surface and
-// the weights re-centred at the result, until it stops moving, so the answer does not depend on how
-// far off the surface the query was.
+// spacings at k = 30, so it follows the density), lowered to 0 at that farthest one; a weighted plane
+// through their weighted centroid (its normal the weighted covariance's least eigenvector) gives a
+// frame, and a weighted quadratic height over that plane refines it where the cloud is clean and the
+// fit well posed. The query is projected on that surface, and the weights re-centred at the result for
+// two more rounds, so that the answer hardly depends on how far off the surface the query was.
 class MlsSurface {
 public:
   MlsSurface(std::vector<geometrycentral::Vector3> points, size_t neighbours);

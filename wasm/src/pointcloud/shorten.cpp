@@ -124,7 +124,7 @@ struct LoopEnergy {
       }
     auto tangential = [&](size_t i, Vector3 v) { return v - dot(v, onSurface[i].normal) * onSurface[i].normal; };
 
-    const double regulariser = kRegularisation * std::accumulate(weight.begin(), weight.end(), 0.) / double(n);
+    const double regulariser = std::pow(2 * M_PI / double(n), 2) * std::accumulate(weight.begin(), weight.end(), 0.) / double(n);
     std::vector<Eigen::Triplet<double>> entries;
     for (size_t i = 0; i < n; i++) {
       const size_t j = (i + 1) % n;
@@ -158,8 +158,9 @@ bool needsResampling(const Polyline& loop, double spacing) {
 // Areas of the two sides of the loop: the points of the constraint region (the sphere, and the points
 // within a spacing of the loop) flooded from either side of the loop along the edges of the tufted
 // triangulation, never across the loop, each weighted by the area it stands for. An edge pq crosses the
-// loop only if both ends lie within |pq| of it, on its two sides; the side of a point is that of the
-// surface's direction across the loop at the nearest point of the loop. A loop whose sides meet is
+// loop only if both ends lie within |pq| of it, on its two sides, where the loop lies on the edge's
+// surface; on a noisy cloud it passes the edge up to the noise away, which a spacing more allows for.
+// The side of a point is that of the surface's direction across the loop at the nearest point of the loop. A loop whose sides meet is
 // measured, as on meshes, over the points within one loop radius of it along the edges (mesh/shorten.cpp).
 std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop, const std::optional<Sphere>& sphere,
                                 double spacing) {
@@ -201,8 +202,8 @@ std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop,
     adjacent[b].push_back(a);
   }
   auto crossesLoop = [&](size_t p, size_t q) {
-    const double length = norm(positions[p] - positions[q]);
-    return distance[p] <= length && distance[q] <= length && positiveSide[p] != positiveSide[q];
+    const double reach = norm(positions[p] - positions[q]) + spacing;
+    return distance[p] <= reach && distance[q] <= reach && positiveSide[p] != positiveSide[q];
   };
 
   const std::vector<double>& pointAreas = cloud.pointAreas();
@@ -278,6 +279,10 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
   double step = 1;
   bool settled = false;
   while (!settled && loopLength(x) >= kDegenerateLength * spacing && result.iterations < kMaxIterations) {
+    // Projecting a projected point moves it a little on a noisy cloud: the energy of a step is compared
+    // with that of the loop projected again, so that a short enough step always lowers it.
+    loop = projected(mls, x);
+    x = positionsOf(loop);
     const double before = energy.value(x);
     Polyline direction = energy.descent(x, loop);
     double longest = 0;

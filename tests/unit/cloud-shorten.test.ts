@@ -94,8 +94,8 @@ describe('MLS projection on a cloud', () => {
     try {
       const { points, quadratic } = noisy.project(loopOf(100, (t) => [Math.cos(t), Math.sin(t), 0]));
       expect(quadratic.filter((q) => q === 1).length).toBeLessThan(20);
-      // Still near the sphere: the noise averaged over the neighbourhood, less the plane's h^2 / 2.
-      pointsOf(points).forEach((p) => expect(Math.abs(Math.hypot(...p) - 1)).toBeLessThan(0.02));
+      // Still near the sphere: noise of 0.02 averaged over the neighbourhood, and the plane's h^2 / 2.
+      pointsOf(points).forEach((p) => expect(Math.abs(Math.hypot(...p) - 1)).toBeLessThan(0.03));
     } finally {
       noisy.dispose();
     }

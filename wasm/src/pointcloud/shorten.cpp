@@ -19,7 +19,6 @@ namespace {
 constexpr double kPenaltyWeight = 10; // lambda of the paper's sphere penalty
 // Steps are preconditioned (LoopEnergy::descent) and scaled down to at most kMaxMove per point, which
 // keeps the MLS projection local; a step is halved while the energy does not decrease.
-constexpr double kRegularisation = 1e-3;
 constexpr int kMaxHalvings = 10;
 constexpr double kMaxMove = 0.5;
 constexpr double kShortest = 0.5, kLongest = 1.5; // a segment outside these lengths resamples the loop
@@ -99,8 +98,10 @@ struct LoopEnergy {
   // small enough for the shortest wavelength, and then moves a loop of N points in about N^2 steps.
   // The matrix: the loop's Laplacian weighted by H''(s) per segment (it bounds each segment's Hessian
   // block, H''(s) along the segment and H'(s) / s across it), plus 2 lambda at points outside the sphere
-  // and a small multiple of the mean weight on the diagonal, which leaves the step that moves the whole
-  // loop at once finite (the largest move per step bounds it). The direction is projected on the tangent
+  // and, on the diagonal, the loop's slowest bending mode's eigenvalue (mean weight (2 pi / N)^2): the
+  // step that moves the whole loop at once (sliding along a tube) is then as fast as that mode, not
+  // unbounded. With 1e-3 of the mean weight instead, that step took over on noisy clouds, where the
+  // surface is rough at its scale, and the descent stalled. The direction is projected on the tangent
   // planes again; it still descends, as the tangential gradient is orthogonal to what that removes.
   Polyline descent(const Polyline& x, const std::vector<MlsPoint>& onSurface) const {
     const size_t n = x.size();
@@ -124,11 +125,11 @@ struct LoopEnergy {
       }
     auto tangential = [&](size_t i, Vector3 v) { return v - dot(v, onSurface[i].normal) * onSurface[i].normal; };
 
-    const double regulariser = std::pow(2 * M_PI / double(n), 2) * std::accumulate(weight.begin(), weight.end(), 0.) / double(n);
+    const double slowestMode = std::pow(2 * M_PI / double(n), 2) * std::accumulate(weight.begin(), weight.end(), 0.) / double(n);
     std::vector<Eigen::Triplet<double>> entries;
     for (size_t i = 0; i < n; i++) {
       const size_t j = (i + 1) % n;
-      entries.emplace_back(i, i, weight[i] + weight[(i + n - 1) % n] + penalty[i] + regulariser);
+      entries.emplace_back(i, i, weight[i] + weight[(i + n - 1) % n] + penalty[i] + slowestMode);
       entries.emplace_back(i, j, -weight[i]);
       entries.emplace_back(j, i, -weight[i]);
     }

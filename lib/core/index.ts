@@ -23,10 +23,13 @@ import {
   type Options,
   type Pipeline,
   type PipelineProgress,
+  type Polyline,
   type RefinedSurface,
   type Refinement,
   type Separator,
+  type ShortenedCloudLoop,
   type Skeleton,
+  type Sphere,
   type SkeletonInput,
   type Surface,
   type SurfacePoint,
@@ -284,6 +287,14 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
 
   windingNumbers(points: Float64Array): Float64Array {
     return this.unwrap(this.live().windingNumbers(points));
+  }
+
+  project(points: Polyline): { points: Polyline; normals: Float64Array; quadratic: Uint8Array } {
+    return this.unwrap(this.live().project(points)) as { points: Polyline; normals: Float64Array; quadratic: Uint8Array };
+  }
+
+  shortenLoop(polyline: Polyline, options: { sphere?: Sphere | null; recordEvery?: number } = {}): ShortenedCloudLoop {
+    return this.unwrap(this.live().shortenLoop(polyline, options)) as ShortenedCloudLoop;
   }
 }
 

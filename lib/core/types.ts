@@ -122,6 +122,31 @@ export type SeparatorStatus =
 /** Points as xyz triples, one after the other. */
 export type Polyline = Float64Array;
 
+/** The locality constraint of paper Sec. 4.1.6: a ball around the source. */
+export interface Sphere {
+  center: [number, number, number];
+  radius: number;
+}
+
+/** Why a loop on a cloud has no shortened loop ('ok' when it has one). */
+export type ShortenStatus = 'ok' | 'degenerate-loop' | 'not-converged';
+
+/** A closed loop shortened on a point cloud (Cloud.shortenLoop; docs/pointcloud.md, "Loop shortening on clouds"). */
+export interface ShortenedCloudLoop {
+  status: ShortenStatus;
+  /** What went wrong, for the user; empty when status is 'ok'. */
+  message: string;
+  /** On the cloud's MLS surface, the last point joined to the first; empty when degenerate (the last iterate when not converged). */
+  loop: Polyline;
+  length: number;
+  /** Areas of the two sides of the loop inside the constraint region, A1 <= A2 (as a Separator's). */
+  areas: [number, number];
+  /** Gradient steps taken. */
+  iterations: number;
+  /** With `recordEvery`: the loop as resampled from the input, every recordEvery-th step after it and the last one. */
+  iterates: Polyline[];
+}
+
 /** Stage 1 of CSCD-M for one source, with every intermediate result (paper Sec. 4.1, Alg. 2). */
 export interface Separator {
   source: number;
@@ -164,7 +189,7 @@ export interface Separator {
   /** The loop (or path) after edge-flip shortening, on the surface. */
   loop: Polyline;
   /** The locality constraint (null when switched off). */
-  sphere: { center: [number, number, number]; radius: number } | null;
+  sphere: Sphere | null;
   approxLength: number;
   length: number;
   /** Surface areas of the two sides of the loop inside the constraint region, A1 <= A2. */
@@ -316,6 +341,16 @@ export interface Cloud {
   distanceFromPoints(sources: number[]): Float64Array;
   /** Test-only: the generalised winding number (about 1 inside, 0 outside) at xyz positions, one per point. */
   windingNumbers(points: Float64Array): Float64Array;
+  /**
+   * Points (xyz triples) projected on the cloud's MLS surface, its unit normals there (of arbitrary sign)
+   * and whether the quadratic height was fitted (1; 0: the plane alone, where the cloud is noisy or sparse).
+   */
+  project(points: Polyline): { points: Polyline; normals: Float64Array; quadratic: Uint8Array };
+  /**
+   * A closed polyline (xyz triples, at least 3 points, last not repeating the first) shortened on the
+   * cloud, kept near `sphere` by the paper's penalty; `recordEvery` > 0 keeps iterates for animation.
+   */
+  shortenLoop(polyline: Polyline, options?: { sphere?: Sphere | null; recordEvery?: number }): ShortenedCloudLoop;
   /** Frees the WASM-side object; the Cloud must not be used afterwards. */
   dispose(): void;
 }

@@ -48,3 +48,22 @@ export function nearestDistances(positions: Float64Array): number[] {
     return best;
   });
 }
+
+/**
+ * `n` points spread at random (from the seed) over the surface of revolution about the z axis of radius
+ * `radius(z)` for z in [zMin, zMax] (uniform in area: rejection by the area element), without normals.
+ */
+export function revolutionPoints(n: number, radius: (z: number) => number, zMin: number, zMax: number, seed: number): Float64Array {
+  const next = random(seed);
+  const slope = (z: number) => (radius(z + 1e-6) - radius(z - 1e-6)) / 2e-6;
+  const element = (z: number) => radius(z) * Math.hypot(1, slope(z));
+  let largest = 0;
+  for (let k = 0; k <= 1000; k++) largest = Math.max(largest, element(zMin + ((zMax - zMin) * k) / 1000));
+  const positions = new Float64Array(3 * n);
+  for (let i = 0; i < n; ) {
+    const z = zMin + (zMax - zMin) * next(), angle = 2 * Math.PI * next();
+    if (next() * largest > element(z)) continue;
+    positions.set([radius(z) * Math.cos(angle), radius(z) * Math.sin(angle), z], 3 * i++);
+  }
+  return positions;
+}

@@ -9,6 +9,7 @@
 #include "mesh/surface.h"
 #include "pointcloud/cloud.h"
 #include "pointcloud/winding.h"
+#include "pointcloud/shorten.h"
 
 #include "geometrycentral/pointcloud/point_cloud_heat_solver.h"
 
@@ -45,7 +46,8 @@ size_t checkedIndex(double index, size_t count, const char* element, const char*
   return size_t(index);
 }
 
-val toArray3(const std::array<double, 3>& v) {
+template <size_t N>
+val toArray(const std::array<double, N>& v) {
   val a = val::array();
   for (double x : v) a.call<void>("push", x);
   return a;
@@ -66,8 +68,8 @@ val toVal(const MeshFacts& f) {
   o.set("nonManifoldVertices", f.nonManifoldVertices);
   o.set("unreferencedVertices", f.unreferencedVertices);
   o.set("degenerateFaces", f.degenerateFaces);
-  o.set("bboxMin", toArray3(f.bboxMin));
-  o.set("bboxMax", toArray3(f.bboxMax));
+  o.set("bboxMin", toArray(f.bboxMin));
+  o.set("bboxMax", toArray(f.bboxMax));
   o.set("bboxDiagonal", f.bboxDiagonal);
   o.set("meanEdgeLength", f.meanEdgeLength);
   return o;
@@ -125,10 +127,7 @@ val toVal(const SeparatorResult& r, Surface& surface) {
   }
   o.set("approxLength", r.approxLength);
   o.set("length", r.length);
-  val areas = val::array();
-  areas.call<void>("push", r.areas[0]);
-  areas.call<void>("push", r.areas[1]);
-  o.set("areas", areas);
+  o.set("areas", toArray(r.areas));
   o.set("score", r.score);
   o.set("centroidInside", r.centroidInside);
   o.set("timings", toVal(r.timings));
@@ -316,12 +315,52 @@ val toVal(const CloudFacts& f) {
   o.set("points", f.points);
   o.set("neighbours", f.neighbours);
   o.set("components", f.components);
-  o.set("bboxMin", toArray3(f.bboxMin));
-  o.set("bboxMax", toArray3(f.bboxMax));
+  o.set("bboxMin", toArray(f.bboxMin));
+  o.set("bboxMax", toArray(f.bboxMax));
   o.set("bboxDiagonal", f.bboxDiagonal);
   o.set("meanSpacing", f.meanSpacing);
   o.set("normalsFromFile", f.normalsFromFile);
   return o;
+}
+
+// Points given from JS as xyz triples.
+std::vector<geometrycentral::Vector3> toPoints(const val& xyz, const char* what) {
+  const std::vector<double> flat = convertJSArrayToNumberVector<double>(xyz);
+  if (flat.size() % 3 != 0) throw InputError(std::string(what) + " must be xyz triples");
+  std::vector<geometrycentral::Vector3> points;
+  for (size_t i = 0; i < flat.size(); i += 3) points.push_back({flat[i], flat[i + 1], flat[i + 2]});
+  return points;
+}
+
+const char* shortenStatusName(ShortenedCloudLoop::Failure failure) {
+  switch (failure) {
+  case ShortenedCloudLoop::Failure::None: return "ok";
+  case ShortenedCloudLoop::Failure::Degenerate: return "degenerate-loop";
+  case ShortenedCloudLoop::Failure::NotConverged: return "not-converged";
+  }
+  return "ok";
+}
+
+val toVal(const ShortenedCloudLoop& r) {
+  val o = val::object();
+  o.set("status", std::string(shortenStatusName(r.failureKind)));
+  o.set("message", r.failure);
+  o.set("loop", toFloat64Array(r.loop));
+  o.set("length", r.length);
+  o.set("areas", toArray(r.areas));
+  o.set("iterations", r.iterations);
+  val iterates = val::array();
+  for (const auto& iterate : r.iterates) iterates.call<void>("push", toFloat64Array(iterate));
+  o.set("iterates", iterates);
+  return o;
+}
+
+// The sphere constraint given from JS ({center: [x, y, z], radius}), or none.
+std::optional<Sphere> toSphere(const val& sphere) {
+  if (sphere.isUndefined() || sphere.isNull()) return std::nullopt;
+  const std::vector<double> center = convertJSArrayToNumberVector<double>(sphere["center"]);
+  if (center.size() != 3 || !sphere["radius"].isNumber()) throw InputError("a sphere is {center: [x, y, z], radius}");
+  return Sphere{{center[0], center[1], center[2]}, sphere["radius"].as<double>()};
 }
 
 // The Cloud of CSCD-PC, opened with the options (only `neighbours` matters to it).
@@ -375,6 +414,40 @@ public:
     });
   }
 
+  // Points (xyz triples) projected on the cloud's MLS surface: {points, normals (of arbitrary sign),
+  // quadratic (1 where the quadratic height was fitted, 0 where the plane alone)}.
+  val project(const val& points) {
+    return reportingErrors([&] {
+      std::vector<geometrycentral::Vector3> projected, normals;
+      std::vector<uint8_t> quadratic;
+      for (const auto& p : toPoints(points, "points")) {
+        if (!isfinite(p)) throw InputError("a point to project has a non-finite coordinate");
+        const MlsPoint onSurface = cloud->mls().project(p);
+        projected.push_back(onSurface.position);
+        normals.push_back(onSurface.normal);
+        quadratic.push_back(onSurface.quadratic);
+      }
+      val o = val::object();
+      o.set("points", toFloat64Array(projected));
+      o.set("normals", toFloat64Array(normals));
+      o.set("quadratic", toTypedArray("Uint8Array", quadratic));
+      return o;
+    });
+  }
+
+  // A closed polyline (xyz triples) shortened on the cloud; options: {sphere: {center, radius}, recordEvery}.
+  val shortenLoop(const val& polyline, const val& options) {
+    return reportingErrors([&] {
+      const bool given = !options.isUndefined() && !options.isNull();
+      const std::optional<Sphere> sphere = toSphere(given ? options["sphere"] : val::undefined());
+      const val every = given ? options["recordEvery"] : val::undefined();
+      const double recordEvery = every.isUndefined() ? 0 : every.as<double>();
+      if (!(recordEvery >= 0 && recordEvery <= 1e6) || recordEvery != std::floor(recordEvery))
+        throw InputError("recordEvery must be a whole number of steps (0: record nothing)");
+      return toVal(cscd::shortenLoop(*cloud, toPoints(polyline, "a loop's points"), sphere, int(recordEvery)));
+    });
+  }
+
 private:
   size_t checkedPoint(double point) const { return checkedIndex(point, cloud->pointCount(), "point", "points", "cloud"); }
 
@@ -409,5 +482,7 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("distance", &CloudBinding::distance)
       .function("referenceDistance", &CloudBinding::referenceDistance)
       .function("distanceFromPoints", &CloudBinding::distanceFromPoints)
-      .function("windingNumbers", &CloudBinding::windingNumbers);
+      .function("windingNumbers", &CloudBinding::windingNumbers)
+      .function("project", &CloudBinding::project)
+      .function("shortenLoop", &CloudBinding::shortenLoop);
 }

@@ -33,6 +33,8 @@ export interface CloudHandle {
   referenceDistance(point: number): Float64Array | CoreFailure;
   distanceFromPoints(points: Float64Array): Float64Array | CoreFailure;
   windingNumbers(points: Float64Array): Float64Array | CoreFailure;
+  project(points: Float64Array): object | CoreFailure;
+  shortenLoop(polyline: Float64Array, options: object): object | CoreFailure;
   delete(): void;
 }
 

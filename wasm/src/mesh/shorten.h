@@ -1,5 +1,7 @@
 #pragma once
 
+#include "cscd/sphere.h"
+
 #include "geometrycentral/surface/signpost_intrinsic_triangulation.h"
 #include "geometrycentral/surface/vertex_position_geometry.h"
 
@@ -9,12 +11,6 @@
 #include <vector>
 
 namespace cscd {
-
-// The locality constraint of paper Sec. 4.1.6: a Euclidean ball around the source.
-struct Sphere {
-  geometrycentral::Vector3 center;
-  double radius;
-};
 
 struct ShortenedLoop {
   // Polyline on the input mesh; closed ones do not repeat the first point at the end.

@@ -5,6 +5,7 @@
 
 #include "geometrycentral/pointcloud/point_position_normal_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -93,6 +94,16 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   facts.normalsFromFile = !arrays.normals.empty();
 
   geodesicSolver = std::make_unique<CloudGeodesics>(tufted, component);
+
+  std::vector<Vector3> points(n);
+  areas.assign(n, 0);
+  for (size_t p = 0; p < n; p++) {
+    points[p] = positions[p];
+    double farthest2 = 0;
+    for (Point q : cloudGeometry->neighbors->neighbors[p]) farthest2 = std::max(farthest2, norm2(positions[q] - positions[p]));
+    areas[p] = M_PI * farthest2 / neighbours;
+  }
+  mlsSurface = std::make_unique<MlsSurface>(std::move(points), size_t(neighbours));
 }
 
 } // namespace cscd

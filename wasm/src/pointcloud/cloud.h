@@ -1,6 +1,7 @@
 #pragma once
 
 #include "pointcloud/geodesics.h"
+#include "pointcloud/mls.h"
 
 #include "geometrycentral/pointcloud/point_cloud.h"
 #include "geometrycentral/pointcloud/point_position_geometry.h"
@@ -49,13 +50,19 @@ public:
   geometrycentral::pointcloud::PointCloud& cloud() { return *pointCloud; }
   geometrycentral::pointcloud::PointPositionGeometry& geometry() { return *cloudGeometry; }
   CloudGeodesics& geodesics() { return *geodesicSolver; }
+  const MlsSurface& mls() const { return *mlsSurface; }
+  // The surface area each point stands for, pi R^2 / k with R the distance to its k-th neighbour: the
+  // disc of its k neighbours holds k points' worth of area (unbiased for uniform random sampling).
+  const std::vector<double>& pointAreas() const { return areas; }
 
 private:
   CloudFacts cloudFacts;
   std::vector<int> component;
+  std::vector<double> areas;
   std::unique_ptr<geometrycentral::pointcloud::PointCloud> pointCloud;
   std::unique_ptr<geometrycentral::pointcloud::PointPositionGeometry> cloudGeometry;
   std::unique_ptr<CloudGeodesics> geodesicSolver;
+  std::unique_ptr<MlsSurface> mlsSurface;
 };
 
 } // namespace cscd

@@ -16,13 +16,10 @@ PointWinding::PointWinding(Cloud& cloud) {
   const PointData<std::vector<Point>>& neighbours = geometry.neighbors->neighbors;
   position.resize(n);
   normal.resize(n);
-  area.resize(n);
+  area = cloud.pointAreas();
   for (size_t p = 0; p < n; p++) {
     position[p] = geometry.positions[p];
     normal[p] = geometry.normals[p];
-    double farthest = 0;
-    for (Point q : neighbours[p]) farthest = std::max(farthest, norm(geometry.positions[q] - position[p]));
-    area[p] = M_PI * farthest * farthest / double(neighbours[p].size() + 1);
   }
 
   // Prim's tree from the topmost unvisited point, whose outward normal points up; each point takes

@@ -13,9 +13,8 @@ namespace cscd {
 //
 // It needs normals of one orientation, which neither PCA nor every scan gives: they are oriented by
 // propagation along a minimum spanning tree of the neighbour graph weighted by 1 - |n_i . n_j| (Hoppe et
-// al. 1992), from the topmost point of each component, whose outward normal points up. Areas: a_i =
-// pi r_i^2 / (k + 1), r_i the distance to the k-th neighbour (the disc holding the point and its k
-// neighbours, shared among them).
+// al. 1992), from the topmost point of each component, whose outward normal points up. Areas: the
+// cloud's point areas.
 class PointWinding {
 public:
   explicit PointWinding(Cloud& cloud);

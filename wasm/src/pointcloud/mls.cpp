@@ -1,0 +1,118 @@
+#include "pointcloud/mls.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace geometrycentral;
+
+namespace cscd {
+namespace {
+
+// The quadratic has 6 coefficients: it is fitted only when the weights spread over more points (the
+// effective count (sum w)^2 / sum w^2 is about 14 for 30 evenly spread neighbours, and lower where they
+// clump) and its normal equations, in coordinates scaled by h, are well conditioned (the points not all
+// near a line). It is used where the cloud is clean: where it explains most of what the plane leaves
+// (its weighted RMS residual at most half the plane's, so the heights are curvature, not noise; on a
+// noisy cloud it would follow the noise and make the surface rough), and where its correction stays
+// within a bandwidth of the plane (beyond, it extrapolates).
+constexpr double kQuadraticMinEffectiveNeighbours = 8;
+constexpr double kQuadraticMinRcond = 1e-3;
+constexpr double kQuadraticMaxResidualRatio = 0.5;
+// The Gaussian's value at the farthest neighbour, two bandwidths away.
+const double kFarthestWeight = std::exp(-4.);
+// Fits around the query, then around the previous round's answer: a fixed number, not "until it
+// settles", so that nearby queries get nearby answers (the loop's descent compares energies of nearby
+// projections; on a noisy cloud the rounds need not settle, and how many ran would make answers jump).
+constexpr int kRounds = 3;
+
+Eigen::Vector3d toEigen(Vector3 v) { return {v.x, v.y, v.z}; }
+Vector3 fromEigen(const Eigen::Vector3d& v) { return Vector3{v.x(), v.y(), v.z()}; }
+
+} // namespace
+
+MlsSurface::MlsSurface(std::vector<Vector3> points_, size_t neighbours_)
+    : points(std::move(points_)), neighbours(neighbours_), finder(std::make_unique<NearestNeighborFinder>(points)) {}
+
+MlsPoint MlsSurface::project(Vector3 query) const {
+  MlsPoint result{query, Vector3{0, 0, 1}, false};
+  Vector3 at = query;
+  const size_t k = std::min(neighbours, points.size());
+  std::vector<double> weights(k);
+  for (int round = 0; round < kRounds; round++) {
+    const std::vector<size_t> near = finder->kNearest(at, k);
+    double farthest2 = 0;
+    for (size_t i : near) farthest2 = std::max(farthest2, norm2(points[i] - at));
+    const double h = std::sqrt(farthest2) / 2;
+    if (!(h > 0)) return MlsPoint{points[near.front()], result.normal, false}; // all k points coincide
+
+    // Weighted plane: centroid, then the covariance's least eigenvector as the normal.
+    double weightSum = 0, weightSquares = 0;
+    Vector3 centroid{0, 0, 0};
+    for (size_t j = 0; j < near.size(); j++) {
+      // The Gaussian less its value at the farthest neighbour: a point entering or leaving the k nearest
+      // does so with weight 0, so the surface moves continuously with the query (a step of the loop's
+      // descent would otherwise jump by a share of the noise as neighbours change, and stall it).
+      weights[j] = std::exp(-norm2(points[near[j]] - at) / (h * h)) - kFarthestWeight;
+      weightSum += weights[j];
+      weightSquares += weights[j] * weights[j];
+      centroid += weights[j] * points[near[j]];
+    }
+    centroid /= weightSum;
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+    for (size_t j = 0; j < near.size(); j++) {
+      const Eigen::Vector3d d = toEigen(points[near[j]] - centroid);
+      covariance += weights[j] * d * d.transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect(covariance);
+    const Vector3 normal = fromEigen(eigen.eigenvectors().col(0)).normalize();
+    const Vector3 e1 = fromEigen(eigen.eigenvectors().col(2)).normalize(), e2 = cross(normal, e1);
+
+    // Height over the plane: a weighted quadratic in coordinates scaled by h (so its system is of order 1).
+    auto monomials = [](double u, double v) {
+      Eigen::Matrix<double, 6, 1> m;
+      m << 1, u, v, u * u, u * v, v * v;
+      return m;
+    };
+    const Vector3 fromCentroid = query - centroid;
+    const double uq = dot(fromCentroid, e1) / h, vq = dot(fromCentroid, e2) / h;
+    Vector3 position = centroid + fromCentroid - dot(fromCentroid, normal) * normal, surfaceNormal = normal;
+    bool quadratic = false;
+    if (weightSum * weightSum / weightSquares >= kQuadraticMinEffectiveNeighbours) {
+      Eigen::Matrix<double, 6, 6> system = Eigen::Matrix<double, 6, 6>::Zero();
+      Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+      for (size_t j = 0; j < near.size(); j++) {
+        const Vector3 d = points[near[j]] - centroid;
+        const Eigen::Matrix<double, 6, 1> m = monomials(dot(d, e1) / h, dot(d, e2) / h);
+        system += weights[j] * m * m.transpose();
+        rhs += weights[j] * dot(d, normal) * m;
+      }
+      const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(system);
+      if (solver.info() == Eigen::Success && solver.rcond() > kQuadraticMinRcond) {
+        const Eigen::Matrix<double, 6, 1> a = solver.solve(rhs);
+        double planeResidual = 0, quadraticResidual = 0; // weighted sums of squares
+        for (size_t j = 0; j < near.size(); j++) {
+          const Vector3 d = points[near[j]] - centroid;
+          const double f = dot(d, normal);
+          planeResidual += weights[j] * f * f;
+          quadraticResidual += weights[j] * std::pow(f - a.dot(monomials(dot(d, e1) / h, dot(d, e2) / h)), 2);
+        }
+        const double height = a.dot(monomials(uq, vq));
+        const double ratio = kQuadraticMaxResidualRatio;
+        if (quadraticResidual <= ratio * ratio * planeResidual && std::abs(height) <= h) {
+          quadratic = true;
+          position += height * normal;
+          const double slopeU = (a[1] + 2 * a[3] * uq + a[4] * vq) / h, slopeV = (a[2] + a[4] * uq + 2 * a[5] * vq) / h;
+          surfaceNormal = (normal - slopeU * e1 - slopeV * e2).normalize();
+        }
+      }
+    }
+    result = MlsPoint{position, surfaceNormal, quadratic};
+    at = position;
+  }
+  return result;
+}
+
+} // namespace cscd

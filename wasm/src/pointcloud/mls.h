@@ -1,0 +1,40 @@
+#pragma once
+
+#include "geometrycentral/utilities/knn.h"
+#include "geometrycentral/utilities/vector3.h"
+
+#include <memory>
+#include <vector>
+
+namespace cscd {
+
+// A point of the moving-least-squares surface, with the surface's unit normal there. The normal's sign
+// is arbitrary (a cloud's normals carry none that can be trusted); only its direction means anything.
+struct MlsPoint {
+  geometrycentral::Vector3 position;
+  geometrycentral::Vector3 normal;
+  bool quadratic = false; // the height fit was a quadratic (else the plane alone)
+};
+
+// The moving-least-squares surface of a cloud (Levin 2003; the paper cites Fleishman et al. 2005),
+// queried by projecting points onto it. Around the current estimate, the k nearest points are weighted
+// by a Gaussian whose bandwidth h is half the distance to the farthest of them (about 1.5 local
+// spacings at k = 30, so it follows the density), lowered to 0 at that farthest one; a weighted plane
+// through their weighted centroid (its normal the weighted covariance's least eigenvector) gives a
+// frame, and a weighted quadratic height over that plane refines it where the cloud is clean and the
+// fit well posed. The query is projected on that surface, and the weights re-centred at the result for
+// two more rounds, so that the answer hardly depends on how far off the surface the query was.
+class MlsSurface {
+public:
+  MlsSurface(std::vector<geometrycentral::Vector3> points, size_t neighbours);
+
+  MlsPoint project(geometrycentral::Vector3 query) const;
+
+private:
+  std::vector<geometrycentral::Vector3> points;
+  size_t neighbours;
+  // Its queries are not const, though they change nothing we can see.
+  std::unique_ptr<geometrycentral::NearestNeighborFinder> finder;
+};
+
+} // namespace cscd

@@ -1,0 +1,336 @@
+#include "pointcloud/shorten.h"
+
+#include "cscd/errors.h"
+
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numeric>
+#include <queue>
+
+using namespace geometrycentral;
+
+namespace cscd {
+namespace {
+
+// Lengths below are in units of the cloud's mean spacing, so that every constant is scale-free.
+constexpr double kPenaltyWeight = 10; // lambda of the paper's sphere penalty
+// Steps are preconditioned (LoopEnergy::descent) and scaled down to at most kMaxMove per point, which
+// keeps the MLS projection local; a step is halved while the energy does not decrease.
+constexpr int kMaxHalvings = 10;
+constexpr double kMaxMove = 0.5;
+constexpr double kShortest = 0.5, kLongest = 1.5; // a segment outside these lengths resamples the loop
+constexpr size_t kMinPoints = 6;
+constexpr double kSettledMove = 1e-3; // converged when no point moves farther in a step
+constexpr int kMaxIterations = 5000;
+// A loop shorter than this encloses nothing the cloud resolves: a tube that thin has under one spacing
+// of radius, and the mesh prunes loops shorter than 3 mean edge lengths by default (pruneLengthFactor).
+constexpr double kDegenerateLength = 3;
+
+using Polyline = std::vector<Vector3>;
+
+double loopLength(const Polyline& loop) {
+  double length = 0;
+  for (size_t i = 0; i < loop.size(); i++) length += norm(loop[(i + 1) % loop.size()] - loop[i]);
+  return length;
+}
+
+std::vector<MlsPoint> projected(const MlsSurface& mls, const Polyline& points) {
+  std::vector<MlsPoint> result;
+  result.reserve(points.size());
+  for (const Vector3& p : points) result.push_back(mls.project(p));
+  return result;
+}
+
+Polyline positionsOf(const std::vector<MlsPoint>& points) {
+  Polyline result;
+  result.reserve(points.size());
+  for (const MlsPoint& p : points) result.push_back(p.position);
+  return result;
+}
+
+// The closed polyline resampled at equal arc lengths, about one spacing apart, then projected on the surface.
+std::vector<MlsPoint> resampled(const MlsSurface& mls, const Polyline& loop, double spacing) {
+  const double length = loopLength(loop);
+  const size_t count = std::max(kMinPoints, size_t(std::lround(length / spacing)));
+  Polyline points;
+  points.reserve(count);
+  size_t segment = 0;
+  double start = 0; // arc length at the start of `segment`
+  for (size_t k = 0; k < count; k++) {
+    const double at = length * double(k) / double(count);
+    double segmentLength = norm(loop[(segment + 1) % loop.size()] - loop[segment]);
+    while (start + segmentLength < at && segment + 1 < loop.size()) {
+      start += segmentLength;
+      segment++;
+      segmentLength = norm(loop[(segment + 1) % loop.size()] - loop[segment]);
+    }
+    const double t = segmentLength > 0 ? std::clamp((at - start) / segmentLength, 0., 1.) : 0;
+    points.push_back((1 - t) * loop[segment] + t * loop[(segment + 1) % loop.size()]);
+  }
+  return projected(mls, points);
+}
+
+// The energy of the paper with the loop measured in spacings: sum H(s_i) + lambda sum max(0, d_i - r)^2.
+struct LoopEnergy {
+  double spacing;
+  std::optional<Sphere> sphere;
+
+  double value(const Polyline& x) const {
+    double e = 0;
+    for (size_t i = 0; i < x.size(); i++) {
+      const double s = norm(x[(i + 1) % x.size()] - x[i]) / spacing;
+      e += std::expm1(s * s);
+    }
+    if (sphere)
+      for (const Vector3& p : x) {
+        const double excess = std::max(0., (norm(p - sphere->center) - sphere->radius) / spacing);
+        e += kPenaltyWeight * excess * excess;
+      }
+    return e;
+  }
+
+  // The descent direction at x (in spacings): the gradient with respect to x / spacing projected on the
+  // surface's tangent planes, then preconditioned by a matrix that bounds the energy's Hessian, so that
+  // a step of 1 is safe for every wavelength along the loop. Plain gradient descent would need a step
+  // small enough for the shortest wavelength, and then moves a loop of N points in about N^2 steps.
+  // The matrix: the loop's Laplacian weighted by H''(s) per segment (it bounds each segment's Hessian
+  // block, H''(s) along the segment and H'(s) / s across it), plus 2 lambda at points outside the sphere
+  // and, on the diagonal, the loop's slowest bending mode's eigenvalue (mean weight (2 pi / N)^2): the
+  // step that moves the whole loop at once (sliding along a tube) is then as fast as that mode, not
+  // unbounded. With 1e-3 of the mean weight instead, that step took over on noisy clouds, where the
+  // surface is rough at its scale, and the descent stalled. The direction is projected on the tangent
+  // planes again; it still descends, as the tangential gradient is orthogonal to what that removes.
+  Polyline descent(const Polyline& x, const std::vector<MlsPoint>& onSurface) const {
+    const size_t n = x.size();
+    Polyline g(n, Vector3{0, 0, 0});
+    std::vector<double> weight(n), penalty(n, 0);
+    for (size_t i = 0; i < n; i++) {
+      const size_t j = (i + 1) % n;
+      const Vector3 d = (x[i] - x[j]) / spacing;
+      const double s2 = norm2(d), grow = std::exp(s2);
+      g[i] += 2 * grow * d; // H'(s) d / s
+      g[j] -= 2 * grow * d;
+      weight[i] = (2 + 4 * s2) * grow; // H''(s)
+    }
+    if (sphere)
+      for (size_t i = 0; i < n; i++) {
+        const Vector3 out = (x[i] - sphere->center) / spacing;
+        const double distance = norm(out), excess = distance - sphere->radius / spacing;
+        if (!(excess > 0)) continue;
+        g[i] += 2 * kPenaltyWeight * excess * out / distance;
+        penalty[i] = 2 * kPenaltyWeight;
+      }
+    auto tangential = [&](size_t i, Vector3 v) { return v - dot(v, onSurface[i].normal) * onSurface[i].normal; };
+
+    const double slowestMode = std::pow(2 * M_PI / double(n), 2) * std::accumulate(weight.begin(), weight.end(), 0.) / double(n);
+    std::vector<Eigen::Triplet<double>> entries;
+    for (size_t i = 0; i < n; i++) {
+      const size_t j = (i + 1) % n;
+      entries.emplace_back(i, i, weight[i] + weight[(i + n - 1) % n] + penalty[i] + slowestMode);
+      entries.emplace_back(i, j, -weight[i]);
+      entries.emplace_back(j, i, -weight[i]);
+    }
+    Eigen::SparseMatrix<double> metric(n, n);
+    metric.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(metric);
+    Eigen::MatrixXd rhs(n, 3);
+    for (size_t i = 0; i < n; i++) {
+      const Vector3 t = -tangential(i, g[i]);
+      rhs.row(i) << t.x, t.y, t.z;
+    }
+    const Eigen::MatrixXd solved = solver.solve(rhs);
+    Polyline direction(n);
+    for (size_t i = 0; i < n; i++) direction[i] = tangential(i, Vector3{solved(i, 0), solved(i, 1), solved(i, 2)});
+    return direction;
+  }
+};
+
+bool needsResampling(const Polyline& loop, double spacing) {
+  for (size_t i = 0; i < loop.size(); i++) {
+    const double s = norm(loop[(i + 1) % loop.size()] - loop[i]) / spacing;
+    if (s < kShortest || s > kLongest) return true;
+  }
+  return false;
+}
+
+// Areas of the two sides of the loop: the points of the constraint region (the sphere, and the points
+// within a spacing of the loop) flooded from either side of the loop along the edges of the tufted
+// triangulation, never across the loop, each weighted by the area it stands for. An edge pq crosses the
+// loop only if both ends lie within |pq| of it, on its two sides, where the loop lies on the edge's
+// surface; on a noisy cloud it passes the edge up to the noise away, which a spacing more allows for.
+// The side of a point is that of the surface's direction across the loop at the nearest point of the loop. A loop whose sides meet is
+// measured, as on meshes, over the points within one loop radius of it along the edges (mesh/shorten.cpp).
+std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop, const std::optional<Sphere>& sphere,
+                                double spacing) {
+  const size_t n = loop.size(), pointCount = cloud.pointCount();
+  const pointcloud::PointData<Vector3>& positions = cloud.geometry().positions;
+  // Normals oriented along the loop (their signs are arbitrary), then each segment's direction across the loop.
+  auto toward = [](Vector3 v, Vector3 reference) { return dot(v, reference) < 0 ? -v : v; };
+  std::vector<Vector3> normals(n), across(n);
+  for (size_t i = 0; i < n; i++) normals[i] = i == 0 ? loop[0].normal : toward(loop[i].normal, normals[i - 1]);
+  for (size_t i = 0; i < n; i++) {
+    const Vector3 along = loop[(i + 1) % n].position - loop[i].position;
+    across[i] = cross(along, normals[i] + toward(normals[(i + 1) % n], normals[i]));
+  }
+
+  std::vector<char> inRegion(pointCount, 0), positiveSide(pointCount, 0);
+  std::vector<double> distance(pointCount, INFINITY);
+  for (size_t p = 0; p < pointCount; p++) {
+    const Vector3 x = positions[p];
+    size_t nearest = 0;
+    Vector3 foot = loop[0].position;
+    for (size_t i = 0; i < n; i++) {
+      const Vector3 a = loop[i].position, b = loop[(i + 1) % n].position;
+      const double t = norm2(b - a) > 0 ? std::clamp(dot(x - a, b - a) / norm2(b - a), 0., 1.) : 0;
+      const Vector3 y = a + t * (b - a);
+      if (norm2(x - y) < distance[p]) distance[p] = norm2(x - y), nearest = i, foot = y;
+    }
+    distance[p] = std::sqrt(distance[p]);
+    positiveSide[p] = dot(x - foot, across[nearest]) >= 0;
+    inRegion[p] = !sphere || distance[p] <= spacing || norm(x - sphere->center) <= sphere->radius;
+  }
+
+  // The tufted triangulation's edges (its vertex i is point i), as adjacency lists.
+  surface::SurfaceMesh& tufted = *cloud.geometry().tuftedMesh;
+  std::vector<std::vector<size_t>> adjacent(pointCount);
+  for (surface::Edge e : tufted.edges()) {
+    const size_t a = e.firstVertex().getIndex(), b = e.secondVertex().getIndex();
+    if (a == b || !inRegion[a] || !inRegion[b]) continue;
+    adjacent[a].push_back(b);
+    adjacent[b].push_back(a);
+  }
+  auto crossesLoop = [&](size_t p, size_t q) {
+    const double reach = norm(positions[p] - positions[q]) + spacing;
+    return distance[p] <= reach && distance[q] <= reach && positiveSide[p] != positiveSide[q];
+  };
+
+  const std::vector<double>& pointAreas = cloud.pointAreas();
+  auto flood = [&](const std::vector<char>& reached, std::array<double, 2>& area) {
+    std::vector<int> side(pointCount, -1);
+    bool separates = true;
+    area = {0, 0};
+    for (int s = 0; s < 2; s++) {
+      std::queue<size_t> queue;
+      auto enter = [&](size_t p) {
+        if (side[p] == 1 - s) separates = false;
+        if (side[p] < 0) {
+          side[p] = s;
+          area[s] += pointAreas[p];
+          queue.push(p);
+        }
+      };
+      for (size_t p = 0; p < pointCount; p++)
+        if (reached[p] && distance[p] <= spacing && bool(positiveSide[p]) == (s == 0)) enter(p);
+      while (!queue.empty()) {
+        const size_t p = queue.front();
+        queue.pop();
+        for (size_t q : adjacent[p])
+          if (reached[q] && !crossesLoop(p, q)) enter(q);
+      }
+    }
+    return separates;
+  };
+
+  std::array<double, 2> area;
+  if (!flood(inRegion, area)) {
+    // Around a handle that lies whole in the region: measure near the loop, within one loop radius along the edges.
+    const double radius = loopLength(positionsOf(loop)) / (2 * M_PI);
+    std::vector<double> along(pointCount, INFINITY);
+    using Entry = std::pair<double, size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
+    for (size_t p = 0; p < pointCount; p++)
+      if (inRegion[p] && distance[p] <= spacing) frontier.push({along[p] = distance[p], p});
+    while (!frontier.empty()) {
+      const auto [d, p] = frontier.top();
+      frontier.pop();
+      if (d > along[p]) continue;
+      for (size_t q : adjacent[p]) {
+        const double through = d + norm(positions[p] - positions[q]);
+        if (through < along[q]) frontier.push({along[q] = through, q});
+      }
+    }
+    std::vector<char> near(pointCount);
+    for (size_t p = 0; p < pointCount; p++) near[p] = along[p] <= radius;
+    if (!flood(near, area)) return {0, area[0] + area[1]};
+  }
+  return {std::min(area[0], area[1]), std::max(area[0], area[1])};
+}
+
+} // namespace
+
+ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std::optional<Sphere>& sphere, int recordEvery) {
+  if (polyline.size() < 3) throw InputError("a loop needs at least 3 points");
+  for (const Vector3& p : polyline)
+    if (!isfinite(p)) throw InputError("the loop has a non-finite coordinate");
+  if (sphere && !(sphere->radius > 0 && std::isfinite(sphere->radius) && isfinite(sphere->center)))
+    throw InputError("the sphere needs a finite centre and a positive radius");
+
+  ShortenedCloudLoop result;
+  const double spacing = cloud.facts().meanSpacing;
+  const MlsSurface& mls = cloud.mls();
+  const LoopEnergy energy{spacing, sphere};
+  std::vector<MlsPoint> loop = resampled(mls, positionsOf(projected(mls, polyline)), spacing);
+  Polyline x = positionsOf(loop);
+  if (recordEvery > 0) result.iterates.push_back(x);
+
+  Polyline trial;
+  double step = 1;
+  bool settled = false;
+  while (!settled && loopLength(x) >= kDegenerateLength * spacing && result.iterations < kMaxIterations) {
+    // Projecting a projected point moves it a little on a noisy cloud: the energy of a step is compared
+    // with that of the loop projected again, so that a short enough step always lowers it.
+    loop = projected(mls, x);
+    x = positionsOf(loop);
+    const double before = energy.value(x);
+    Polyline direction = energy.descent(x, loop);
+    double longest = 0;
+    for (const Vector3& d : direction) longest = std::max(longest, norm(d));
+    if (longest > kMaxMove)
+      for (Vector3& d : direction) d *= kMaxMove / longest;
+    std::vector<MlsPoint> next;
+    double after = INFINITY;
+    for (int halving = 0;; halving++) {
+      trial.resize(x.size());
+      for (size_t i = 0; i < x.size(); i++) trial[i] = x[i] + step * spacing * direction[i];
+      next = projected(mls, trial);
+      after = energy.value(positionsOf(next));
+      if (after < before || halving == kMaxHalvings) break;
+      step /= 2;
+    }
+    // No step lowers the energy: the loop is at a minimum, up to how well the MLS surface is known.
+    if (!(after < before)) break;
+    step = std::min(1., 2 * step);
+    double largestMove = 0;
+    for (size_t i = 0; i < x.size(); i++) largestMove = std::max(largestMove, norm(next[i].position - x[i]) / spacing);
+    settled = largestMove < kSettledMove;
+    loop = std::move(next);
+    x = positionsOf(loop);
+    if (needsResampling(x, spacing)) {
+      loop = resampled(mls, x, spacing);
+      x = positionsOf(loop);
+    }
+    result.iterations++;
+    if (recordEvery > 0 && result.iterations % recordEvery == 0) result.iterates.push_back(x);
+  }
+  if (recordEvery > 0 && result.iterations % recordEvery != 0) result.iterates.push_back(x);
+
+  result.length = loopLength(x);
+  if (result.length < kDegenerateLength * spacing) {
+    result.failureKind = ShortenedCloudLoop::Failure::Degenerate;
+    result.failure = "the loop shrank to a point: it encloses no feature inside the constraint region";
+    result.length = 0;
+    return result;
+  }
+  if (result.iterations == kMaxIterations && !settled) {
+    result.failureKind = ShortenedCloudLoop::Failure::NotConverged;
+    result.failure = "the loop was still moving after " + std::to_string(kMaxIterations) + " steps";
+  }
+  result.loop = x;
+  result.areas = sideAreas(cloud, loop, sphere, spacing);
+  return result;
+}
+
+} // namespace cscd

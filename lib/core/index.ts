@@ -15,7 +15,9 @@ import {
   type Cloud,
   type CloudArrays,
   type CloudFacts,
+  type CloudNeighbourhood,
   type CloudOptions,
+  type CloudSeparatorStages,
   type Core,
   type Evaluation,
   type MeshArrays,
@@ -280,6 +282,14 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
 
   distanceFromPoints(sources: number[]): Float64Array {
     return this.unwrap(this.live().distanceFromPoints(Float64Array.from(sources)));
+  }
+
+  neighbourhood(): CloudNeighbourhood {
+    return this.unwrap(this.live().neighbourhood()) as CloudNeighbourhood;
+  }
+
+  separatorStages(source: number, options: Partial<Options> = {}): CloudSeparatorStages {
+    return this.unwrap(this.live().separatorStages(source, options)) as CloudSeparatorStages;
   }
 }
 

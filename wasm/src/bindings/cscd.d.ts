@@ -32,6 +32,8 @@ export interface CloudHandle {
   distance(point: number): Float64Array | CoreFailure;
   referenceDistance(point: number): Float64Array | CoreFailure;
   distanceFromPoints(points: Float64Array): Float64Array | CoreFailure;
+  neighbourhood(): object | CoreFailure;
+  separatorStages(source: number, options: object): object | CoreFailure;
   delete(): void;
 }
 

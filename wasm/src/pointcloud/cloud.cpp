@@ -95,4 +95,14 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   geodesicSolver = std::make_unique<CloudGeodesics>(tufted, component);
 }
 
+const CloudNeighbourhood& Cloud::neighbourhood() {
+  if (!neighbourGraph) neighbourGraph = std::make_unique<CloudNeighbourhood>(*cloudGeometry);
+  return *neighbourGraph;
+}
+
+const CloudCutLocusSolver& Cloud::cutLocusSolver() {
+  if (!cutLocus) cutLocus = std::make_unique<CloudCutLocusSolver>(neighbourhood(), *cloudGeometry->tuftedGeom, cloudFacts.meanSpacing);
+  return *cutLocus;
+}
+
 } // namespace cscd

@@ -1,6 +1,8 @@
 #pragma once
 
+#include "pointcloud/cut_locus.h"
 #include "pointcloud/geodesics.h"
+#include "pointcloud/neighbourhood.h"
 
 #include "geometrycentral/pointcloud/point_cloud.h"
 #include "geometrycentral/pointcloud/point_position_geometry.h"
@@ -49,6 +51,10 @@ public:
   geometrycentral::pointcloud::PointCloud& cloud() { return *pointCloud; }
   geometrycentral::pointcloud::PointPositionGeometry& geometry() { return *cloudGeometry; }
   CloudGeodesics& geodesics() { return *geodesicSolver; }
+  // The graph the cut locus and the loops run on, and the cut locus's per-cloud operators: built on
+  // first use (opening a cloud for its distances alone does not pay for them).
+  const CloudNeighbourhood& neighbourhood();
+  const CloudCutLocusSolver& cutLocusSolver();
 
 private:
   CloudFacts cloudFacts;
@@ -56,6 +62,8 @@ private:
   std::unique_ptr<geometrycentral::pointcloud::PointCloud> pointCloud;
   std::unique_ptr<geometrycentral::pointcloud::PointPositionGeometry> cloudGeometry;
   std::unique_ptr<CloudGeodesics> geodesicSolver;
+  std::unique_ptr<CloudNeighbourhood> neighbourGraph;
+  std::unique_ptr<CloudCutLocusSolver> cutLocus;
 };
 
 } // namespace cscd

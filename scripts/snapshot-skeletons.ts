@@ -12,7 +12,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { loadCoreNode } from '../lib/core/node.ts';
-import { defaultOptions, MESH_OPTIONS, parseOptionText } from '../lib/core/options.ts';
+import { defaultOptions, MESH_OPTIONS, optionsFromPairs } from '../lib/core/options.ts';
 import type { Options } from '../lib/core/types.ts';
 import { parseMesh } from '../lib/io/index.ts';
 import { writeSkeletonJson } from '../lib/io/skeleton.ts';
@@ -24,14 +24,8 @@ const { positionals, values } = parseArgs({
   allowPositionals: true,
   options: { n: { type: 'string', default: '40' }, set: { type: 'string', multiple: true, default: [] } },
 });
-/** --set roundSize=1 and the like: any option, read as the address bar reads it. */
-const overrides: Partial<Options> = Object.fromEntries(values.set.map((pair) => {
-  const [key, text] = pair.split('=');
-  const spec = MESH_OPTIONS.find((o) => o.key === key);
-  const value = spec && text !== undefined ? parseOptionText(spec as never, text) : null;
-  if (value === null) throw new Error(`--set ${pair}: not an option and a value it accepts`);
-  return [key, value];
-}));
+/** --set roundSize=1 and the like: any option of a mesh. */
+const overrides = optionsFromPairs(values.set, MESH_OPTIONS) as Partial<Options>;
 const [command, ...rest] = positionals;
 
 if (command === 'write') {

@@ -15,7 +15,9 @@ import {
   type Cloud,
   type CloudArrays,
   type CloudFacts,
+  type CloudNeighbourhood,
   type CloudOptions,
+  type CloudSeparatorStages,
   type Core,
   type Evaluation,
   type MeshArrays,
@@ -295,6 +297,14 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
 
   shortenLoop(polyline: Polyline, options: { sphere?: Sphere | null; recordEvery?: number } = {}): ShortenedCloudLoop {
     return this.unwrap(this.live().shortenLoop(polyline, options)) as ShortenedCloudLoop;
+  }
+
+  neighbourhood(): CloudNeighbourhood {
+    return this.unwrap(this.live().neighbourhood()) as CloudNeighbourhood;
+  }
+
+  separatorStages(source: number, options: Partial<Options> = {}): CloudSeparatorStages {
+    return this.unwrap(this.live().separatorStages(source, options)) as CloudSeparatorStages;
   }
 }
 

@@ -185,6 +185,17 @@ export function parseOptionText<K extends keyof CloudOptions>(spec: Extract<Opti
   return parseSpecText(spec as OptionSpec, text) as CloudOptions[K] | null;
 }
 
+/** Options from `key=value` texts (the scripts' --set), each read as the address bar reads it, among `specs`; throws on any other. */
+export function optionsFromPairs(pairs: readonly string[], specs: readonly OptionSpec[] = OPTIONS): Partial<CloudOptions> {
+  return Object.fromEntries(pairs.map((pair) => {
+    const [key, text] = pair.split('=');
+    const spec = specs.find((o) => o.key === key);
+    const value = spec && text !== undefined ? parseSpecText(spec, text) : null;
+    if (value === null) throw new Error(`--set ${pair}: not an option and a value it accepts`);
+    return [key, value];
+  }));
+}
+
 /** A run setting's value from its text; null when it is not acceptable. */
 export function parseSettingText<K extends keyof RunSettings>(spec: SettingSpec & { key: K }, text: string): RunSettings[K] | null {
   return parseSpecText(spec, text) as RunSettings[K] | null;

@@ -327,6 +327,51 @@ export interface RefinedSurface extends Surface {
   readonly refined: Refinement | null;
 }
 
+/** The graph a cloud's cut locus and loops run on (docs/pointcloud.md, "The graph"). */
+export interface CloudNeighbourhood {
+  /** Pairs of point indices: the local-triangulation edges that stay in the tangent planes. */
+  edges: Uint32Array;
+  /** Local-triangulation edges left out because they leave a tangent plane (they cross a gap between two parts). */
+  bridgesRemoved: number;
+  /** Connected components of the graph. */
+  components: number;
+}
+
+/**
+ * Stage 1 of CSCD-PC for one source as far as the approximate loop (paper Sec. 4.1.2-4.1.4 on clouds),
+ * named as the mesh's Separator; point indices where the mesh has vertex indices.
+ */
+export interface CloudSeparatorStages {
+  source: number;
+  /** 'ok', 'no-cut-locus', 'no-target' or 'trace-failed' (no target with two opposite incoming gradients and a loop). */
+  status: SeparatorStatus;
+  message: string;
+  /** Geodesic distance from the source, per point. */
+  distance: Float64Array;
+  cutLocus: Separator['cutLocus'] & {
+    /** Points that pass both the angle and the Laplacian test, and the connected pieces they form in the graph before the tree bridges them. */
+    passingPoints: number;
+    passingPieces: number;
+  };
+  /** The distance's gradient at every point, xyz (in its tangent plane; 0 outside the source's part of the graph). */
+  gradient: Float64Array;
+  /** Cut-locus points that qualify as targets, the nearest first. */
+  targets: Uint32Array;
+  /** The target the loop runs through, or null. */
+  target: number | null;
+  targetPoint: [number, number, number] | null;
+  /** Targets tried: the next one when the incoming gradients at one were not opposite. */
+  attempts: number;
+  /** The two descending paths from the target, as polylines and as point indices (target first, meeting point last). */
+  paths: [Polyline, Polyline];
+  pathPoints: [Uint32Array, Uint32Array];
+  /** The closed loop they form (the last point joins the first), as a polyline and as point indices. */
+  approxLoop: Polyline;
+  approxLoopPoints: Uint32Array;
+  /** Milliseconds per stage. */
+  timings: Record<string, number>;
+}
+
 /**
  * Per-cloud state kept in the core (CSCD-PC): the k nearest neighbours, the tufted intrinsic
  * triangulation built from them and its prefactored geodesic solver.
@@ -351,6 +396,10 @@ export interface Cloud {
    * cloud, kept near `sphere` by the paper's penalty; `recordEvery` > 0 keeps iterates for animation.
    */
   shortenLoop(polyline: Polyline, options?: { sphere?: Sphere | null; recordEvery?: number }): ShortenedCloudLoop;
+  /** The graph the cut locus and loops run on (built on first use). */
+  neighbourhood(): CloudNeighbourhood;
+  /** Stage 1 for one source up to the approximate loop, every step kept (tests, teaching views). */
+  separatorStages(source: number, options?: Partial<Options>): CloudSeparatorStages;
   /** Frees the WASM-side object; the Cloud must not be used afterwards. */
   dispose(): void;
 }

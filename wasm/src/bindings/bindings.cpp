@@ -10,6 +10,7 @@
 #include "pointcloud/cloud.h"
 #include "pointcloud/winding.h"
 #include "pointcloud/shorten.h"
+#include "pointcloud/separator.h"
 
 #include "geometrycentral/pointcloud/point_cloud_heat_solver.h"
 
@@ -75,6 +76,25 @@ val toVal(const MeshFacts& f) {
   return o;
 }
 
+// A cut locus's graph and per-vertex fields; positionsOf gives the xyz of a list of vertex indices.
+template <class PositionsOf>
+val cutLocusRecord(const CutLocus& c, PositionsOf&& positionsOf) {
+  std::vector<uint32_t> vertices(c.vertices.begin(), c.vertices.end());
+  val cutLocus = val::object();
+  cutLocus.set("vertices", toTypedArray("Uint32Array", vertices));
+  cutLocus.set("points", positionsOf(c.vertices));
+  cutLocus.set("edges", toPairArray(c.edges));
+  cutLocus.set("angleDeviation", toFloat64Array(c.angleDeviation));
+  cutLocus.set("laplacian", toFloat64Array(c.laplacian));
+  cutLocus.set("root", c.root);
+  cutLocus.set("cycleRank", c.vertices.empty() ? 0 : c.cycleRank());
+  return cutLocus;
+}
+
+val toUint32Array(const std::vector<size_t>& indices) {
+  return toTypedArray("Uint32Array", std::vector<uint32_t>(indices.begin(), indices.end()));
+}
+
 val toVal(const SeparatorResult& r, Surface& surface) {
   val o = val::object();
   o.set("source", r.source);
@@ -87,17 +107,7 @@ val toVal(const SeparatorResult& r, Surface& surface) {
     for (size_t v : vertices) p.push_back(surface.geometry().vertexPositions[v]);
     return toFloat64Array(p);
   };
-  const CutLocus& c = r.cutLocus;
-  std::vector<uint32_t> vertices(c.vertices.begin(), c.vertices.end());
-  val cutLocus = val::object();
-  cutLocus.set("vertices", toTypedArray("Uint32Array", vertices));
-  cutLocus.set("points", positionsOf(c.vertices));
-  cutLocus.set("edges", toPairArray(c.edges));
-  cutLocus.set("angleDeviation", toFloat64Array(c.angleDeviation));
-  cutLocus.set("laplacian", toFloat64Array(c.laplacian));
-  cutLocus.set("root", c.root);
-  cutLocus.set("cycleRank", c.vertices.empty() ? 0 : c.cycleRank());
-  o.set("cutLocus", cutLocus);
+  o.set("cutLocus", cutLocusRecord(r.cutLocus, positionsOf));
 
   val extremities = val::object();
   extremities.set("vertices", toTypedArray("Uint32Array", std::vector<uint32_t>(r.boundaryExtremities.begin(),
@@ -363,6 +373,48 @@ std::optional<Sphere> toSphere(const val& sphere) {
   return Sphere{{center[0], center[1], center[2]}, sphere["radius"].as<double>()};
 }
 
+// Stage 1 of CSCD-PC for one source as far as the approximate loop; paths and loop as point indices and polylines.
+val toVal(const CloudSeparatorStages& r, const CloudNeighbourhood& neighbourhood) {
+  auto positionsOf = [&](const std::vector<size_t>& points) {
+    std::vector<geometrycentral::Vector3> p;
+    for (size_t i : points) p.push_back(neighbourhood.position(i));
+    return toFloat64Array(p);
+  };
+  val o = val::object();
+  o.set("source", r.source);
+  o.set("status", std::string(separatorStatusName(r.status)));
+  o.set("message", r.message);
+  o.set("distance", toFloat64Array(r.distance));
+  val cutLocus = cutLocusRecord(r.cutLocus.graph, positionsOf);
+  cutLocus.set("passingPoints", r.cutLocus.passingPoints);
+  cutLocus.set("passingPieces", r.cutLocus.passingPieces);
+  o.set("cutLocus", cutLocus);
+  o.set("gradient", toFloat64Array(r.cutLocus.gradient));
+  o.set("targets", toUint32Array(r.targets));
+  o.set("target", r.target ? val(*r.target) : val::null());
+  o.set("targetPoint", r.target ? toArray3(neighbourhood.position(*r.target)) : val::null());
+  o.set("attempts", r.attempts);
+  val paths = val::array(), pathPoints = val::array();
+  for (const std::vector<size_t>* path : {&r.traced.firstPath, &r.traced.secondPath}) {
+    paths.call<void>("push", positionsOf(*path));
+    pathPoints.call<void>("push", toUint32Array(*path));
+  }
+  o.set("paths", paths);
+  o.set("pathPoints", pathPoints);
+  o.set("approxLoop", positionsOf(r.traced.loop));
+  o.set("approxLoopPoints", toUint32Array(r.traced.loop));
+  o.set("timings", toVal(r.timings));
+  return o;
+}
+
+val toVal(const CloudNeighbourhood& n) {
+  val o = val::object();
+  o.set("edges", toPairArray(n.graph().edgeVertices));
+  o.set("bridgesRemoved", n.bridgesRemoved());
+  o.set("components", n.componentCount());
+  return o;
+}
+
 // The Cloud of CSCD-PC, opened with the options (only `neighbours` matters to it).
 class CloudBinding {
 public:
@@ -390,6 +442,18 @@ public:
       if (!reference) reference = std::make_unique<geometrycentral::pointcloud::PointCloudHeatSolver>(cloud->cloud(), cloud->geometry());
       const Eigen::VectorXd distance = reference->computeDistance(cloud->cloud().point(source)).toVector();
       return toFloat64Array(std::vector<double>(distance.data(), distance.data() + distance.size()));
+    });
+  }
+
+  // The graph the cloud's cut locus and loops run on.
+  val neighbourhood() {
+    return reportingErrors([&] { return toVal(cloud->neighbourhood()); });
+  }
+
+  // Stage 1 for one source up to the approximate loop, every step kept (tests, teaching views).
+  val separatorStages(double source, const val& options) {
+    return reportingErrors([&] {
+      return toVal(computeCloudSeparatorStages(*cloud, checkedPoint(source), toOptions(options)), cloud->neighbourhood());
     });
   }
 
@@ -484,5 +548,7 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("distanceFromPoints", &CloudBinding::distanceFromPoints)
       .function("windingNumbers", &CloudBinding::windingNumbers)
       .function("project", &CloudBinding::project)
-      .function("shortenLoop", &CloudBinding::shortenLoop);
+      .function("shortenLoop", &CloudBinding::shortenLoop)
+      .function("neighbourhood", &CloudBinding::neighbourhood)
+      .function("separatorStages", &CloudBinding::separatorStages);
 }

@@ -35,6 +35,8 @@ export interface CloudHandle {
   windingNumbers(points: Float64Array): Float64Array | CoreFailure;
   project(points: Float64Array): object | CoreFailure;
   shortenLoop(polyline: Float64Array, options: object): object | CoreFailure;
+  neighbourhood(): object | CoreFailure;
+  separatorStages(source: number, options: object): object | CoreFailure;
   delete(): void;
 }
 

@@ -1,6 +1,6 @@
 #include "mesh/boundary.h"
 
-#include "mesh/target.h"
+#include "cscd/target.h"
 
 #include <algorithm>
 #include <cmath>
@@ -89,8 +89,8 @@ std::vector<BoundaryPair> opposedExtremities(const std::vector<BoundaryExtremity
     for (size_t b = a + 1; b < extremities.size(); b++) {
       const BoundaryExtremity &ea = extremities[a], &eb = extremities[b];
       if ((ea.loop != eb.loop && !acrossLoops) || !(norm(ea.gradient + eb.gradient) < kMaxGradientSum)) continue;
-      double key = std::max(targetKey(geometry, distance, source, ea.vertex, mode),
-                            targetKey(geometry, distance, source, eb.vertex, mode));
+      double key = std::max(targetKey(geometry.vertexPositions, distance, source, ea.vertex, mode),
+                            targetKey(geometry.vertexPositions, distance, source, eb.vertex, mode));
       pairs.push_back({{ea.vertex, eb.vertex}, key});
     }
   std::stable_sort(pairs.begin(), pairs.end(), [](const BoundaryPair& x, const BoundaryPair& y) { return x.key < y.key; });

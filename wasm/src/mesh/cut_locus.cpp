@@ -18,7 +18,7 @@ namespace cscd {
 
 namespace {
 
-constexpr size_t NONE = std::numeric_limits<size_t>::max();
+constexpr size_t NONE = kNoParent;
 
 using Vec2 = std::array<double, 2>;
 
@@ -29,15 +29,6 @@ Vec2 rotate(const Vec2& v, const Vec2& unitComplex) {
 Vec2 toVec2(const Vector2& v) { return {v.x, v.y}; }
 
 } // namespace
-
-size_t CutLocus::components() const {
-  UnionFind sets(vertices.size());
-  for (const auto& e : edges) sets.unite(e[0], e[1]);
-  size_t count = 0;
-  for (size_t i = 0; i < vertices.size(); i++)
-    if (sets.find(i) == i) count++;
-  return count;
-}
 
 CutLocusSolver::CutLocusSolver(IntrinsicTriangulation& intrinsic) {
   ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
@@ -83,6 +74,7 @@ CutLocusSolver::CutLocusSolver(IntrinsicTriangulation& intrinsic) {
     }
   }
 
+  std::vector<std::array<size_t, 2>>& edgeVertices = graph.edgeVertices;
   edgeVertices.resize(mesh.nEdges());
   edgeFaces.resize(mesh.nEdges());
   double lengthSum = 0;
@@ -96,21 +88,23 @@ CutLocusSolver::CutLocusSolver(IntrinsicTriangulation& intrinsic) {
   }
   meanEdge = mesh.nEdges() > 0 ? lengthSum / mesh.nEdges() : 1;
 
-  rowStart.assign(nVertices + 1, 0);
+  graph.rowStart.assign(nVertices + 1, 0);
   cornerStart.assign(nVertices + 1, 0);
   vertexArea.resize(nVertices);
   for (Vertex v : mesh.vertices()) {
     size_t i = vIndex[v];
     vertexArea[i] = intrinsic.vertexDualAreas[v];
     for (Halfedge he : v.outgoingHalfedges()) {
-      neighbours.push_back({vIndex[he.tipVertex()], eIndex[he.edge()], intrinsic.edgeCotanWeights[he.edge()],
-                            toVec2(intrinsic.transportVectorsAlongHalfedge[he.twin()])});
+      graph.neighbour.push_back(vIndex[he.tipVertex()]);
+      graph.edge.push_back(eIndex[he.edge()]);
+      cotanWeight.push_back(intrinsic.edgeCotanWeights[he.edge()]);
+      transportToCenter.push_back(toVec2(intrinsic.transportVectorsAlongHalfedge[he.twin()]));
       if (!he.isInterior()) continue;
       // The outgoing halfedge is known in both frames, which fixes the face -> vertex rotation.
       Vector2 rotation = unit(intrinsic.halfedgeVectorsInVertex[he] / intrinsic.halfedgeVectorsInFace[he]);
       corners.push_back({fIndex[he.face()], intrinsic.faceAreas[he.face()], toVec2(rotation)});
     }
-    rowStart[i + 1] = neighbours.size();
+    graph.rowStart[i + 1] = graph.neighbour.size();
     cornerStart[i + 1] = corners.size();
   }
 
@@ -144,12 +138,6 @@ CutLocusSolver::CutLocusSolver(IntrinsicTriangulation& intrinsic) {
   intrinsic.unrequireHalfedgeVectorsInFace();
   intrinsic.unrequireHalfedgeVectorsInVertex();
   intrinsic.unrequireTransportVectorsAlongHalfedge();
-}
-
-size_t CutLocusSolver::up(const std::vector<size_t>& parentEdge, size_t v) const {
-  if (parentEdge[v] == NONE) return NONE;
-  const auto& ends = edgeVertices[parentEdge[v]];
-  return ends[0] == v ? ends[1] : ends[0];
 }
 
 // Step 1: the distance is linear on each intrinsic triangle; its gradient in the face's own frame.
@@ -208,13 +196,10 @@ std::vector<double> CutLocusSolver::angleDeviations(const std::vector<double>& d
     if (!options.everyAngle && !(mayPass(v, laplacian, options))) continue;
     ring.clear();
     if (const Vec2* d = directionOf(v)) ring.push_back(*d);
-    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++)
-      if (const Vec2* d = directionOf(neighbours[n].vertex)) ring.push_back(rotate(*d, neighbours[n].transportToCenter));
-    double smallestCosine = 1;
-    for (size_t i = 0; i < ring.size(); i++)
-      for (size_t j = i + 1; j < ring.size(); j++)
-        smallestCosine = std::min(smallestCosine, ring[i][0] * ring[j][0] + ring[i][1] * ring[j][1]);
-    if (options.everyAngle || smallestCosine <= clearlyBelow) deviation[v] = std::acos(std::max(-1.0, smallestCosine));
+    for (size_t n = graph.rowStart[v]; n < graph.rowStart[v + 1]; n++)
+      if (const Vec2* d = directionOf(graph.neighbour[n])) ring.push_back(rotate(*d, transportToCenter[n]));
+    const double cosine = smallestCosine(ring);
+    if (options.everyAngle || cosine <= clearlyBelow) deviation[v] = std::acos(std::max(-1.0, cosine));
   }
   return deviation;
 }
@@ -226,93 +211,15 @@ std::vector<double> CutLocusSolver::distanceLaplacian(const std::vector<double>&
   for (size_t v = 0; v < nVertices; v++) {
     if (!std::isfinite(distance[v]) || vertexArea[v] <= 0) continue;
     double sum = 0;
-    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++)
-      sum += neighbours[n].cotanWeight * (distance[neighbours[n].vertex] - distance[v]);
+    for (size_t n = graph.rowStart[v]; n < graph.rowStart[v + 1]; n++)
+      sum += cotanWeight[n] * (distance[graph.neighbour[n]] - distance[v]);
     laplacian[v] = meanEdge * sum / vertexArea[v];
   }
   return laplacian;
 }
 
-// Steps 5-6: spanning tree of the source's component rooted at the farthest vertex, grown Prim-style
-// from the most ridge-like frontier vertex first (lowest Laplacian), each vertex hanging from its most
-// ridge-like neighbour already in the tree. Vertices passing the thresholds go ahead of all others, so
-// the tree first spans every passing vertex connected to the root through passing vertices: that
-// subtree is the restriction in growing mode (a breadth-first search from the root through passing
-// vertices), and within it the tree runs along the ridge crests. Only passing vertices and their paths
-// to the root are ever read, so the tree stops growing once it holds every passing vertex (on the
-// horse, after 12-92% of the vertices, median 79%, over 24 sources); the others keep no parent.
-std::vector<size_t> CutLocusSolver::ridgeTree(const std::vector<double>& laplacian, const std::vector<char>& passing,
-                                              const std::vector<double>& distance, size_t root) const {
-  std::vector<size_t> parent(nVertices, NONE);
-  std::vector<char> inTree(nVertices, 0), queued(nVertices, 0);
-  size_t passingLeft = std::count(passing.begin(), passing.end(), 1);
-  using Entry = std::pair<std::pair<bool, double>, size_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
-  auto push = [&](size_t v) {
-    queued[v] = 1;
-    frontier.push({{!passing[v], std::isnan(laplacian[v]) ? INFINITY : laplacian[v]}, v});
-  };
-  push(root);
-  while (!frontier.empty()) {
-    size_t v = frontier.top().second;
-    frontier.pop();
-    inTree[v] = 1;
-    passingLeft -= passing[v];
-    std::pair<bool, double> best{true, INFINITY};
-    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++) {
-      size_t w = neighbours[n].vertex;
-      std::pair<bool, double> key{!passing[w], laplacian[w]};
-      if (inTree[w] && w != v && (parent[v] == NONE || key < best)) {
-        best = key;
-        parent[v] = neighbours[n].edge;
-      }
-      if (!queued[w] && std::isfinite(distance[w])) push(w);
-    }
-    if (passingLeft == 0) break;
-  }
-  parent[root] = NONE;
-  return parent;
-}
-
 bool CutLocusSolver::mayPass(size_t v, const std::vector<double>& laplacian, const CutLocusOptions& options) const {
   return !onBoundary[v] && laplacian[v] <= -options.laplacianThreshold;
-}
-
-std::vector<char> CutLocusSolver::passingVertices(const std::vector<double>& angleDeviation,
-                                                  const std::vector<double>& laplacian,
-                                                  const CutLocusOptions& options) const {
-  std::vector<char> passing(nVertices, 0);
-  for (size_t v = 0; v < nVertices; v++)
-    passing[v] = mayPass(v, laplacian, options) && angleDeviation[v] >= options.angleThreshold;
-  return passing;
-}
-
-// Growing: the root and every vertex whose whole tree path to the root passes. Pruning: every passing
-// vertex and its whole tree path to the root.
-std::vector<char> CutLocusSolver::restrictTree(const std::vector<size_t>& parent, const std::vector<char>& passing,
-                                               size_t root, CutLocusRestriction mode) const {
-  std::vector<char> kept(nVertices, 0), known(nVertices, 0);
-  if (mode == CutLocusRestriction::Pruning) {
-    kept[root] = 1;
-    for (size_t v = 0; v < nVertices; v++)
-      if (passing[v] && parent[v] != NONE)
-        for (size_t w = v; !kept[w]; w = up(parent, w)) kept[w] = 1;
-    return kept;
-  }
-  kept[root] = known[root] = 1;
-  std::vector<size_t> path;
-  for (size_t v = 0; v < nVertices; v++) {
-    path.clear();
-    size_t w = v;
-    for (; w != NONE && !known[w]; w = up(parent, w)) path.push_back(w);
-    bool keep = w != NONE && kept[w];
-    for (auto it = path.rbegin(); it != path.rend(); ++it) {
-      keep = keep && passing[*it];
-      kept[*it] = keep;
-      known[*it] = 1;
-    }
-  }
-  return kept;
 }
 
 // Step 7a: the primal tree of the homology step. The kept vertices keep their ridge-tree edges; the
@@ -328,8 +235,8 @@ std::vector<size_t> CutLocusSolver::linkingTree(const std::vector<size_t>& ridge
   for (size_t v = 0; v < nVertices; v++) {
     if (!kept[v]) continue;
     parent[v] = ridgeParent[v];
-    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++) {
-      size_t w = neighbours[n].vertex;
+    for (size_t n = graph.rowStart[v]; n < graph.rowStart[v + 1]; n++) {
+      size_t w = graph.neighbour[n];
       if (!queued[w] && std::isfinite(distance[w])) {
         queued[w] = 1;
         frontier.push({distance[w], w});
@@ -341,11 +248,11 @@ std::vector<size_t> CutLocusSolver::linkingTree(const std::vector<size_t>& ridge
     frontier.pop();
     inTree[v] = 1;
     double best = -INFINITY;
-    for (size_t n = rowStart[v]; n < rowStart[v + 1]; n++) {
-      size_t w = neighbours[n].vertex;
+    for (size_t n = graph.rowStart[v]; n < graph.rowStart[v + 1]; n++) {
+      size_t w = graph.neighbour[n];
       if (inTree[w] && w != v && distance[w] > best) {
         best = distance[w];
-        parent[v] = neighbours[n].edge;
+        parent[v] = graph.edge[n];
       }
       if (!queued[w] && std::isfinite(distance[w])) {
         queued[w] = 1;
@@ -362,7 +269,7 @@ std::vector<size_t> CutLocusSolver::linkingTree(const std::vector<size_t>& ridge
 std::vector<size_t> CutLocusSolver::homologyGenerators(const std::vector<size_t>& parent,
                                                        const std::vector<double>& distance, size_t source) const {
   // By edge, not by endpoints: intrinsic triangulations can have two edges between the same vertices.
-  std::vector<char> treeEdge(edgeVertices.size(), 0);
+  std::vector<char> treeEdge(graph.edgeVertices.size(), 0);
   for (size_t v = 0; v < nVertices; v++)
     if (parent[v] != NONE) treeEdge[parent[v]] = 1;
   auto isTreeEdge = [&](size_t e) { return treeEdge[e] != 0; };
@@ -371,7 +278,7 @@ std::vector<size_t> CutLocusSolver::homologyGenerators(const std::vector<size_t>
     return distance[fv[0]] + distance[fv[1]] + distance[fv[2]];
   };
 
-  std::vector<char> faceIn(faceVertices.size(), 0), edgeUsed(edgeVertices.size(), 0);
+  std::vector<char> faceIn(faceVertices.size(), 0), edgeUsed(graph.edgeVertices.size(), 0);
   using Entry = std::pair<double, size_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
   size_t start = corners[cornerStart[source]].face;
@@ -391,8 +298,8 @@ std::vector<size_t> CutLocusSolver::homologyGenerators(const std::vector<size_t>
   }
 
   std::vector<size_t> generators;
-  for (size_t e = 0; e < edgeVertices.size(); e++)
-    if (std::isfinite(distance[edgeVertices[e][0]]) && !edgeUsed[e] && !isTreeEdge(e)) generators.push_back(e);
+  for (size_t e = 0; e < graph.edgeVertices.size(); e++)
+    if (std::isfinite(distance[graph.edgeVertices[e][0]]) && !edgeUsed[e] && !isTreeEdge(e)) generators.push_back(e);
   return generators;
 }
 
@@ -416,9 +323,9 @@ CutLocus CutLocusSolver::compute(const std::vector<double>& distance, size_t sou
     return result;
   }
 
-  std::vector<char> passing = passingVertices(result.angleDeviation, result.laplacian, options);
-  std::vector<size_t> parent = ridgeTree(result.laplacian, passing, dist, result.root);
-  std::vector<char> kept = restrictTree(parent, passing, result.root, options.restriction);
+  std::vector<char> passing = passingVertices(result.angleDeviation, result.laplacian, onBoundary, options);
+  std::vector<size_t> parent = ridgeTree(graph, result.laplacian, passing, dist, result.root);
+  std::vector<char> kept = restrictTree(graph, parent, passing, result.root, options.restriction);
 
   // Link every generator to the restricted set by climbing the tree from both ends: each adds exactly
   // one cycle, since everything else added is tree edges hanging from the (parent-closed) kept set.
@@ -428,48 +335,13 @@ CutLocus CutLocusSolver::compute(const std::vector<double>& distance, size_t sou
     generators = homologyGenerators(parent, dist, source);
   }
   for (size_t e : generators)
-    for (size_t v : edgeVertices[e])
-      for (; !kept[v]; v = up(parent, v)) kept[v] = 1;
+    for (size_t v : graph.edgeVertices[e])
+      for (; !kept[v]; v = treeParent(graph, parent, v)) kept[v] = 1;
 
-  // Graph of kept vertices: tree edges to their parents plus the generators.
-  std::vector<std::vector<size_t>> adjacent(nVertices);
-  auto link = [&](size_t a, size_t b) {
-    adjacent[a].push_back(b);
-    adjacent[b].push_back(a);
-  };
-  for (size_t v = 0; v < nVertices; v++)
-    if (kept[v] && parent[v] != NONE) link(v, up(parent, v));
-  for (size_t e : generators) link(edgeVertices[e][0], edgeVertices[e][1]);
-
-  // Step 8: remove leaf branches (leaf .. first junction) shorter than pruneDepth edges. The root, as
-  // the farthest point, always stays; a graph that is a single path is kept whole.
-  std::vector<size_t> degree(nVertices);
-  for (size_t v = 0; v < nVertices; v++) degree[v] = adjacent[v].size();
-  std::vector<size_t> branch;
-  for (size_t leaf = 0; leaf < nVertices; leaf++) {
-    if (!kept[leaf] || degree[leaf] != 1 || leaf == result.root) continue;
-    branch.assign(1, leaf);
-    size_t previous = leaf, v = adjacent[leaf][0];
-    while (degree[v] == 2 && v != result.root) {
-      branch.push_back(v);
-      size_t next = adjacent[v][0] == previous ? adjacent[v][1] : adjacent[v][0];
-      previous = v;
-      v = next;
-    }
-    bool endsAtJunction = degree[v] >= 3 || v == result.root;
-    if (endsAtJunction && branch.size() < static_cast<size_t>(std::max(options.pruneDepth, 0)))
-      for (size_t b : branch) kept[b] = 0;
-  }
-
-  std::vector<size_t> node(nVertices, NONE);
-  for (size_t v = 0; v < nVertices; v++)
-    if (kept[v]) {
-      node[v] = result.vertices.size();
-      result.vertices.push_back(v);
-    }
-  for (size_t v = 0; v < nVertices; v++)
-    for (size_t w : adjacent[v])
-      if (v < w && kept[v] && kept[w]) result.edges.push_back({node[v], node[w]});
+  // Graph of kept vertices: tree edges to their parents plus the generators (step 8 prunes it).
+  std::vector<std::array<size_t, 2>> generatorEdges;
+  for (size_t e : generators) generatorEdges.push_back(graph.edgeVertices[e]);
+  assembleCutLocus(graph, parent, std::move(kept), generatorEdges, options.pruneDepth, result);
   return result;
 }
 

@@ -1,9 +1,9 @@
 #include "mesh/separator.h"
 
 #include "cscd/stage_clock.h"
+#include "cscd/target.h"
 #include "mesh/boundary.h"
 #include "cscd/measures.h"
-#include "mesh/target.h"
 
 #include <algorithm>
 
@@ -45,8 +45,6 @@ SeparatorResult& fail(SeparatorResult& result, SeparatorStatus status, std::stri
 
 } // namespace
 
-// Targets must be reached by a detour: geodesic >= 1.2 x Euclidean distance (see rankTargets).
-constexpr double kMinDetour = 1.2;
 // When a target's loop is degenerate, the next target tried is at least this much farther away...
 constexpr double kFallbackGrowth = 1.5;
 // ...up to this many targets in all.
@@ -69,8 +67,8 @@ struct Extremity {
 std::vector<Extremity> rankExtremities(Surface& surface, size_t source, const Options& options, SeparatorResult& result) {
   VertexPositionGeometry& geometry = surface.geometry();
   std::vector<Extremity> ranked;
-  for (size_t t : rankTargets(result.cutLocus, result.distance, geometry, source, options.target, kMinDetour))
-    ranked.push_back({targetKey(geometry, result.distance, source, t, options.target), t, std::nullopt});
+  for (size_t t : rankTargets(result.cutLocus, result.distance, geometry.vertexPositions, source, options.target, kMinDetour))
+    ranked.push_back({targetKey(geometry.vertexPositions, result.distance, source, t, options.target), t, std::nullopt});
 
   std::vector<BoundaryExtremity> extremities =
       boundaryExtremities(surface.boundaryLoops(), geometry, result.distance,
@@ -134,19 +132,6 @@ SeparatorStatus loopThrough(Surface& surface, size_t source, const Extremity& ex
 }
 
 } // namespace
-
-const char* separatorStatusName(SeparatorStatus status) {
-  switch (status) {
-    case SeparatorStatus::Ok: return "ok";
-    case SeparatorStatus::NoCutLocus: return "no-cut-locus";
-    case SeparatorStatus::NoTarget: return "no-target";
-    case SeparatorStatus::TraceFailed: return "trace-failed";
-    case SeparatorStatus::DegenerateLoop: return "degenerate-loop";
-    case SeparatorStatus::ShortenFailed: return "shorten-failed";
-    case SeparatorStatus::NotSeparating: return "not-separating";
-  }
-  return "ok";
-}
 
 SeparatorResult computeSeparator(Surface& surface, size_t source, const Options& options, bool everyAngle) {
   SeparatorResult result;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cscd/options.h"
+#include "cscd/separator_status.h"
 #include "mesh/cut_locus.h"
 #include "mesh/shorten.h"
 #include "mesh/surface.h"
@@ -13,11 +14,6 @@
 #include <vector>
 
 namespace cscd {
-
-// Why a source has no separator (Ok when it has one); separatorStatusName gives the name the bindings,
-// the CLI JSON and the page use (SeparatorStatus in lib/core/types.ts).
-enum class SeparatorStatus { Ok, NoCutLocus, NoTarget, TraceFailed, DegenerateLoop, ShortenFailed, NotSeparating };
-const char* separatorStatusName(SeparatorStatus status);
 
 // Stage 1 of CSCD-M for one source, with every intermediate result kept for the teaching views.
 struct SeparatorResult {

@@ -1,89 +1,17 @@
 #include "mesh/trace.h"
 
 #include <algorithm>
-#include <unordered_set>
 
 using namespace geometrycentral::surface;
 
 namespace cscd {
 namespace {
 
-// The neighbour of `ring` (a cyclic run from `begin`, `count` long) with the smallest distance.
-size_t lowestOnArc(const std::vector<size_t>& ring, size_t begin, size_t count, const std::vector<double>& distance) {
-  size_t best = ring[begin % ring.size()];
-  for (size_t k = 1; k < count; k++) {
-    size_t v = ring[(begin + k) % ring.size()];
-    if (distance[v] < distance[best]) best = v;
-  }
-  return best;
-}
-
-// The two vertices next to the target from which the wavefront arrived, on either side of the cut locus:
-// the one-ring is split into arcs by the target's cut-locus edges and the lowest vertex of the two
-// lowest arcs is taken. At a branch end (one cut-locus edge or none) the ring is halved opposite it.
-std::vector<size_t> incomingNeighbours(ManifoldSurfaceMesh& mesh, const std::vector<double>& distance,
-                                       const CutLocus& cutLocus, size_t target) {
-  std::unordered_set<size_t> alongCutLocus;
-  for (const auto& e : cutLocus.edges) {
-    size_t a = cutLocus.vertices[e[0]], b = cutLocus.vertices[e[1]];
-    if (a == target) alongCutLocus.insert(b);
-    if (b == target) alongCutLocus.insert(a);
-  }
-  std::vector<size_t> ring;
-  for (Vertex w : mesh.vertex(target).adjacentVertices()) ring.push_back(w.getIndex());
-  const size_t n = ring.size();
-  if (n < 2) return {};
-
-  std::vector<size_t> cuts;
-  for (size_t k = 0; k < n; k++)
-    if (alongCutLocus.count(ring[k])) cuts.push_back(k);
-  if (cuts.size() < 2) {
-    // Leave out the cut-locus neighbour (or, with none, the highest neighbour) and halve the rest.
-    auto higher = [&](size_t a, size_t b) { return distance[a] < distance[b]; };
-    size_t first = cuts.empty() ? size_t(std::max_element(ring.begin(), ring.end(), higher) - ring.begin()) : cuts[0];
-    if (n < 3) return {};
-    size_t half = (n - 1) / 2;
-    return {lowestOnArc(ring, first + 1, half, distance), lowestOnArc(ring, first + half + 1, n - 1 - half, distance)};
-  }
-
-  std::vector<size_t> arcLowest; // one per non-empty arc between consecutive cuts
-  for (size_t i = 0; i < cuts.size(); i++) {
-    size_t from = cuts[i], to = cuts[(i + 1) % cuts.size()];
-    size_t count = (to + n - from - 1) % n;
-    if (count > 0) arcLowest.push_back(lowestOnArc(ring, from + 1, count, distance));
-  }
-  if (arcLowest.size() < 2) return {};
-  std::partial_sort(arcLowest.begin(), arcLowest.begin() + 2, arcLowest.end(),
-                    [&](size_t a, size_t b) { return distance[a] < distance[b]; });
-  return {arcLowest[0], arcLowest[1]};
-}
-
-// Greedy descent (Alg. 3): always to the neighbour with the smallest distance, until the source.
-bool descend(ManifoldSurfaceMesh& mesh, const std::vector<double>& distance, size_t source, std::vector<size_t>& path) {
-  while (path.back() != source) {
-    size_t current = path.back(), next = current;
-    for (Vertex w : mesh.vertex(current).adjacentVertices())
-      if (distance[w.getIndex()] < distance[next]) next = w.getIndex();
-    if (next == current) return false; // a local minimum of the distance away from the source
-    path.push_back(next);
-  }
-  return true;
-}
-
-// Both descents end at the source; each is cut at the first vertex they share after their start.
-void joinDescents(TracedLoop& traced) {
-  std::unordered_set<size_t> onFirst(traced.firstPath.begin() + 1, traced.firstPath.end());
-  size_t meet = 1;
-  while (!onFirst.count(traced.secondPath[meet])) meet++;
-  const size_t meeting = traced.secondPath[meet];
-  traced.secondPath.resize(meet + 1);
-  traced.firstPath.resize(size_t(std::find(traced.firstPath.begin(), traced.firstPath.end(), meeting) -
-                                 traced.firstPath.begin()) +
-                          1);
-  traced.loop = traced.firstPath;
-  // A loop leaves out the target at the end (it closes there); a path ends at its second end.
-  const size_t last = traced.closed ? 1 : 0;
-  for (size_t k = traced.secondPath.size() - 1; k-- > last;) traced.loop.push_back(traced.secondPath[k]);
+bool descendOnMesh(ManifoldSurfaceMesh& mesh, const std::vector<double>& distance, size_t source, std::vector<size_t>& path) {
+  auto forEachNeighbour = [&](size_t v, auto&& visit) {
+    for (Vertex w : mesh.vertex(v).adjacentVertices()) visit(w.getIndex());
+  };
+  return descend(forEachNeighbour, distance, source, path);
 }
 
 } // namespace
@@ -91,14 +19,16 @@ void joinDescents(TracedLoop& traced) {
 TracedLoop traceApproximateLoop(ManifoldSurfaceMesh& mesh, const std::vector<double>& distance,
                                 const CutLocus& cutLocus, size_t target, size_t source) {
   TracedLoop traced;
-  std::vector<size_t> starts = incomingNeighbours(mesh, distance, cutLocus, target);
+  std::vector<size_t> ring;
+  for (Vertex w : mesh.vertex(target).adjacentVertices()) ring.push_back(w.getIndex());
+  std::vector<size_t> starts = incomingNeighbours(ring, distance, cutLocus, target);
   if (starts.size() != 2) {
     traced.failure = "no two incoming directions at the target";
     return traced;
   }
   traced.firstPath = {target, starts[0]};
   traced.secondPath = {target, starts[1]};
-  if (!descend(mesh, distance, source, traced.firstPath) || !descend(mesh, distance, source, traced.secondPath)) {
+  if (!descendOnMesh(mesh, distance, source, traced.firstPath) || !descendOnMesh(mesh, distance, source, traced.secondPath)) {
     traced.failure = "steepest descent stopped at a local minimum of the distance";
     return traced;
   }
@@ -113,7 +43,7 @@ TracedLoop traceApproximatePath(ManifoldSurfaceMesh& mesh, const std::vector<dou
   traced.closed = false;
   traced.firstPath = {ends[0]};
   traced.secondPath = {ends[1]};
-  if (!descend(mesh, distance, source, traced.firstPath) || !descend(mesh, distance, source, traced.secondPath)) {
+  if (!descendOnMesh(mesh, distance, source, traced.firstPath) || !descendOnMesh(mesh, distance, source, traced.secondPath)) {
     traced.failure = "steepest descent stopped at a local minimum of the distance";
     return traced;
   }

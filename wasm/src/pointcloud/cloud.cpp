@@ -106,4 +106,14 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   mlsSurface = std::make_unique<MlsSurface>(std::move(points), size_t(neighbours));
 }
 
+const CloudNeighbourhood& Cloud::neighbourhood() {
+  if (!neighbourGraph) neighbourGraph = std::make_unique<CloudNeighbourhood>(*cloudGeometry);
+  return *neighbourGraph;
+}
+
+const CloudCutLocusSolver& Cloud::cutLocusSolver() {
+  if (!cutLocus) cutLocus = std::make_unique<CloudCutLocusSolver>(neighbourhood(), *cloudGeometry->tuftedGeom, cloudFacts.meanSpacing);
+  return *cutLocus;
+}
+
 } // namespace cscd

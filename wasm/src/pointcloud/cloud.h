@@ -1,7 +1,9 @@
 #pragma once
 
+#include "pointcloud/cut_locus.h"
 #include "pointcloud/geodesics.h"
 #include "pointcloud/mls.h"
+#include "pointcloud/neighbourhood.h"
 
 #include "geometrycentral/pointcloud/point_cloud.h"
 #include "geometrycentral/pointcloud/point_position_geometry.h"
@@ -54,6 +56,10 @@ public:
   // The surface area each point stands for, pi R^2 / k with R the distance to its k-th neighbour: the
   // disc of its k neighbours holds k points' worth of area (unbiased for uniform random sampling).
   const std::vector<double>& pointAreas() const { return areas; }
+  // The graph the cut locus and the loops run on, and the cut locus's per-cloud operators: built on
+  // first use (opening a cloud for its distances alone does not pay for them).
+  const CloudNeighbourhood& neighbourhood();
+  const CloudCutLocusSolver& cutLocusSolver();
 
 private:
   CloudFacts cloudFacts;
@@ -63,6 +69,8 @@ private:
   std::unique_ptr<geometrycentral::pointcloud::PointPositionGeometry> cloudGeometry;
   std::unique_ptr<CloudGeodesics> geodesicSolver;
   std::unique_ptr<MlsSurface> mlsSurface;
+  std::unique_ptr<CloudNeighbourhood> neighbourGraph;
+  std::unique_ptr<CloudCutLocusSolver> cutLocus;
 };
 
 } // namespace cscd

@@ -2,7 +2,9 @@
 
 #include "evaluate/closest_point.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace cscd {
 
@@ -13,19 +15,24 @@ std::vector<bool> referencedVertices(const TriangleMesh& mesh) {
   return used;
 }
 
-std::vector<double> tubeRadii(const TriangleMesh& mesh, const SkeletonCurves& skeleton) {
+namespace {
+
+// The weighted mean distance that the points `used` lend each node; a node no point chose gets
+// `fallback(node)`.
+template <class Fallback>
+std::vector<double> lentRadii(const std::vector<Vector3>& points, const std::vector<bool>& used,
+                              const SkeletonCurves& skeleton, Fallback fallback) {
   // Every node is a segment of its own too (a, a), so isolated nodes are found.
   std::vector<std::array<uint32_t, 2>> segments = skeleton.edges;
   for (uint32_t i = 0; i < skeleton.nodes.size(); i++) segments.push_back({i, i});
   SegmentTree tree(skeleton.nodes, segments);
 
   std::vector<double> weightedSum(skeleton.nodes.size(), 0), weight(skeleton.nodes.size(), 0);
-  std::vector<bool> used = referencedVertices(mesh);
-  for (size_t v = 0; v < mesh.vertices.size(); v++) {
+  for (size_t v = 0; v < points.size(); v++) {
     if (!used[v]) continue;
-    SegmentTree::Hit hit = tree.closest(mesh.vertices[v]);
+    SegmentTree::Hit hit = tree.closest(points[v]);
     auto [a, b] = segments[hit.primitive];
-    double t = closestParameterOnSegment(mesh.vertices[v], skeleton.nodes[a], skeleton.nodes[b]);
+    double t = closestParameterOnSegment(points[v], skeleton.nodes[a], skeleton.nodes[b]);
     double distance = std::sqrt(hit.distance2);
     weightedSum[a] += (1 - t) * distance;
     weight[a] += 1 - t;
@@ -34,10 +41,26 @@ std::vector<double> tubeRadii(const TriangleMesh& mesh, const SkeletonCurves& sk
   }
 
   std::vector<double> radii(skeleton.nodes.size());
-  TriangleTree surface(mesh.vertices, mesh.triangles);
-  for (size_t i = 0; i < radii.size(); i++)
-    radii[i] = weight[i] > 1e-9 ? weightedSum[i] / weight[i] : std::sqrt(surface.closest(skeleton.nodes[i]).distance2);
+  for (size_t i = 0; i < radii.size(); i++) radii[i] = weight[i] > 1e-9 ? weightedSum[i] / weight[i] : fallback(i);
   return radii;
+}
+
+} // namespace
+
+std::vector<double> tubeRadii(const TriangleMesh& mesh, const SkeletonCurves& skeleton) {
+  std::unique_ptr<TriangleTree> surface; // built only if a node needs it
+  return lentRadii(mesh.vertices, referencedVertices(mesh), skeleton, [&](size_t i) {
+    if (!surface) surface = std::make_unique<TriangleTree>(mesh.vertices, mesh.triangles);
+    return std::sqrt(surface->closest(skeleton.nodes[i]).distance2);
+  });
+}
+
+std::vector<double> tubeRadii(const std::vector<Vector3>& points, const SkeletonCurves& skeleton) {
+  return lentRadii(points, std::vector<bool>(points.size(), true), skeleton, [&](size_t i) {
+    double nearest2 = INFINITY;
+    for (const Vector3& p : points) nearest2 = std::min(nearest2, norm2(p - skeleton.nodes[i]));
+    return std::sqrt(nearest2);
+  });
 }
 
 } // namespace cscd

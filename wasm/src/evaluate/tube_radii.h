@@ -16,4 +16,7 @@ std::vector<bool> referencedVertices(const TriangleMesh& mesh);
 // surface. Used for CSCD's own node radii and for skeletons of other tools that carry none.
 std::vector<double> tubeRadii(const TriangleMesh& mesh, const SkeletonCurves& skeleton);
 
+// The same around a point cloud's points (a node no point chose gets its distance to the nearest point).
+std::vector<double> tubeRadii(const std::vector<Vector3>& points, const SkeletonCurves& skeleton);
+
 } // namespace cscd

@@ -1,5 +1,6 @@
 #include "mesh/realization.h"
 
+#include "cscd/centre.h"
 #include "evaluate/tube_radii.h"
 #include "cscd/measures.h"
 #include "cscd/overlap.h"
@@ -82,24 +83,8 @@ geometrycentral::Vector3 MeshRealization::separatorNormal(const Candidate& candi
 bool MeshRealization::inside(const geometrycentral::Vector3& p) const { return surface.winding()(p) > 0.5; }
 
 void MeshRealization::centre(SkeletonGraph& graph, const Selection<Candidate>& packed) const {
-  for (size_t node = 0; node < packed.size(); node++) {
-    const Candidate& c = *packed[node];
-    geometrycentral::Vector3 centroid = loopCentroid(c.loop, c.closed), n = separatorNormal(c);
-    graph.nodes[node] = centroid + dot(graph.nodes[node] - centroid, n) * n;
-    if (c.closed && !inside(graph.nodes[node])) graph.nodes[node] = centroid;
-  }
-  for (size_t node = packed.size(); node < graph.nodes.size(); node++) {
-    if (graph.weights[node] != 0) continue;
-    size_t heaviest = SIZE_MAX;
-    bool nextToPath = false;
-    for (const auto& e : graph.edges) {
-      size_t other = e[0] == node ? e[1] : e[1] == node ? e[0] : SIZE_MAX;
-      if (other == SIZE_MAX) continue;
-      nextToPath = nextToPath || (other < packed.size() && !packed[other]->closed);
-      if (heaviest == SIZE_MAX || graph.weights[other] > graph.weights[heaviest]) heaviest = other;
-    }
-    if (heaviest != SIZE_MAX && !nextToPath && !inside(graph.nodes[node])) graph.nodes[node] = graph.nodes[heaviest];
-  }
+  centreNodes(graph, packed, [&](const Candidate& c) { return separatorNormal(c); },
+              [&](const geometrycentral::Vector3& p) { return inside(p); });
 }
 
 void MeshRealization::fitRadii(SkeletonGraph& graph) const {

@@ -98,7 +98,7 @@ function table(rows: [string, string][]): string {
 
 function overview(): string {
   return [
-    `cscd ${version()}: curve skeletons of triangle meshes (CSCD)`,
+    `cscd ${version()}: curve skeletons of triangle meshes and point clouds (CSCD)`,
     '',
     'Usage: cscd <command> [options]',
     '',
@@ -115,7 +115,7 @@ function overview(): string {
     ]),
     '',
     `Meshes: ${MESH_EXTENSIONS.join(' ')} (the format is checked against the content).`,
-    `Point clouds (info and distance): ${CLOUD_EXTENSIONS.join(' ')} (PLY and OBJ files without faces, point lists).`,
+    `Point clouds (info, distance and skeleton): ${CLOUD_EXTENSIONS.join(' ')} (PLY and OBJ files without faces, point lists).`,
     'Errors: one line "cscd: <message>" on stderr; exit code 2 for usage errors, 1 otherwise.',
   ].join('\n');
 }

@@ -5,10 +5,13 @@ import { openNodePool } from '../../lib/core/node-pool.ts';
 import { AUTO_N, type RunSettings } from '../../lib/core/options.ts';
 import { runStage1 } from '../../lib/core/pool.ts';
 import { poolSize } from '../../lib/core/pool-size.ts';
-import type { MeshArrays, Options, PipelineProgress, Skeleton } from '../../lib/core/types.ts';
+import type { CloudOptions, MeshArrays, Options, Pipeline, PipelineProgress, Skeleton } from '../../lib/core/types.ts';
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
-import { UsageError, decimateIfAsked, decimateOption, openSolver, readMesh, type Command, type OptionValues, type Output } from '../command.ts';
-import { optionFlagSpecs, optionsFromFlags, settingFlagSpecs, settingsFromFlags } from './separator.ts';
+import {
+  UsageError, decimateIfAsked, decimateOption, openCloud, openSolver, readShape, refuseFlags,
+  type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues, type Output,
+} from '../command.ts';
+import { cloudFlagSpecs, cloudOptionsFromFlags, optionFlagSpecs, optionsFromFlags, settingFlagSpecs, settingsFromFlags } from './separator.ts';
 
 /** Threads of stage 1 (lib/core/pool-size.ts: the page's rule, with this machine's cores and memory). */
 function threadsFor(settings: RunSettings, options: Options, mesh: MeshArrays): number {
@@ -60,10 +63,11 @@ class ProgressLine {
 
 export const skeleton: Command = {
   name: 'skeleton',
-  summary: 'the curve skeleton of a mesh (CSCD-M, stages 1 and 2), as JSON, PLY, OBJ or SWC',
-  args: ['<mesh>'],
+  summary: 'the curve skeleton of a mesh (CSCD-M) or a point cloud (CSCD-PC), stages 1 and 2, as JSON, PLY, OBJ or SWC',
+  args: ['<mesh|cloud>'],
   options: {
     ...optionFlagSpecs(),
+    ...cloudFlagSpecs(),
     decimate: decimateOption,
     format: { type: 'string', value: SKELETON_FORMATS.join('|'), description: 'output format (default: from the --out extension, else json)' },
     out: { type: 'string', value: 'FILE', description: 'write the skeleton to FILE instead of stdout' },
@@ -74,48 +78,29 @@ export const skeleton: Command = {
     'Draws N sources with the seed (--n auto: until new separators stop adding coverage), finds a local',
     'separator from each (stage 1, as `cscd separator`), then keeps the best non-overlapping ones and',
     'builds the skeleton from the regions they bound (stage 2). On a terminal, progress and a summary',
-    '(nodes, edges, cycles, N, seconds) go to stderr. Formats and keys: docs/cli.md.',
+    '(nodes, edges, cycles, N, seconds) go to stderr. Formats and keys: docs/cli.md. A point cloud (a file',
+    'without faces) runs CSCD-PC on this thread (--workers does not apply yet); vertexToNode is then per point.',
   ].join('\n'),
   async run([file], values, io) {
-    const options = optionsFromFlags(values);
+    const cloudOptions = cloudOptionsFromFlags(values);
     const settings = settingsFromFlags(values);
     const format = outputFormat(values);
-    const mesh = decimateIfAsked(await readMesh(file, io), values, file, io);
-    const tty = io.stderr.isTTY === true;
+    const shape = await readShape(file, io, cloudOptions.neighbours);
     const progress = new ProgressLine(io.stderr);
-    const name = path.basename(file);
-
-    const workers = threadsFor(settings, options, mesh);
     const started = performance.now();
     let result: Skeleton;
-    // The pool's threads open the mesh while this one does.
-    const opening = workers > 1 ? openNodePool(mesh, options, { workers }) : null;
-    const surface = await openSolver(mesh, file, io).catch(async (error) => {
-      await opening?.then((pool) => pool.close(), () => undefined);
-      throw error;
-    });
-    const pool = await opening?.catch((error) => {
-      surface.dispose();
-      throw error;
-    });
+    let options: Options;
     try {
-      const pipeline = surface.pipeline(options);
-      try {
-        const report = (step: PipelineProgress) => {
-          if (tty) progress.update(`cscd: skeleton of ${name}: stage 1, source ${step.done} of ${options.n === 'auto' ? `at most ${step.total}` : step.total}`);
-        };
-        await runStage1(pipeline, pool?.workers ?? [], {
-          progress: report,
-          lost: (_, error) => io.stderr.write(`cscd: warning: a worker thread failed (${error instanceof Error ? error.message : String(error)}); the others go on\n`),
-        });
-        if (tty) progress.update(`cscd: skeleton of ${name}: stage 2`, true);
-        result = pipeline.finish();
-      } finally {
-        pipeline.dispose();
+      if (shape.kind === 'cloud') {
+        refuseFlags(values, ['decimate'], file, 'point cloud');
+        options = cloudOptions;
+        result = await cloudSkeleton(shape, cloudOptions, file, io, progress);
+      } else {
+        refuseFlags(values, Object.keys(cloudFlagSpecs()), file, 'mesh');
+        options = optionsFromFlags(values);
+        result = await meshSkeleton(decimateIfAsked(shape, values, file, io), options, settings, file, io, progress);
       }
     } finally {
-      await pool?.close();
-      surface.dispose();
       progress.clear();
     }
     const seconds = (performance.now() - started) / 1000;
@@ -125,6 +110,8 @@ export const skeleton: Command = {
     else io.stdout.write(text);
 
     const { stats } = result;
+    const tty = io.stderr.isTTY === true;
+    const name = path.basename(file);
     if (stats.packed === 0) io.stderr.write(`cscd: warning: ${file}: no separator was kept: the skeleton is one node per connected component\n`);
     if (tty || values.verbose === true) {
       const nodes = result.nodes.length / 3;
@@ -134,3 +121,51 @@ export const skeleton: Command = {
     }
   },
 };
+
+/** Stage 1 with its progress line, then stage 2. */
+async function runPipeline(pipeline: Pipeline, workers: Parameters<typeof runStage1>[1], options: Options, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {
+  const name = path.basename(file);
+  const tty = io.stderr.isTTY === true;
+  try {
+    const report = (step: PipelineProgress) => {
+      if (tty) progress.update(`cscd: skeleton of ${name}: stage 1, source ${step.done} of ${options.n === 'auto' ? `at most ${step.total}` : step.total}`);
+    };
+    await runStage1(pipeline, workers, {
+      progress: report,
+      lost: (_, error) => io.stderr.write(`cscd: warning: a worker thread failed (${error instanceof Error ? error.message : String(error)}); the others go on\n`),
+    });
+    if (tty) progress.update(`cscd: skeleton of ${name}: stage 2`, true);
+    return pipeline.finish();
+  } finally {
+    pipeline.dispose();
+  }
+}
+
+async function meshSkeleton(mesh: InputMesh, options: Options, settings: RunSettings, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {
+  const workers = threadsFor(settings, options, mesh);
+  // The pool's threads open the mesh while this one does.
+  const opening = workers > 1 ? openNodePool(mesh, options, { workers }) : null;
+  const surface = await openSolver(mesh, file, io).catch(async (error) => {
+    await opening?.then((pool) => pool.close(), () => undefined);
+    throw error;
+  });
+  const pool = await opening?.catch((error) => {
+    surface.dispose();
+    throw error;
+  });
+  try {
+    return await runPipeline(surface.pipeline(options), pool?.workers ?? [], options, file, io, progress);
+  } finally {
+    await pool?.close();
+    surface.dispose();
+  }
+}
+
+async function cloudSkeleton(shape: InputCloud, options: CloudOptions, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {
+  const cloud = await openCloud(shape, options, file, io);
+  try {
+    return await runPipeline(cloud.pipeline(options), [], options, file, io, progress);
+  } finally {
+    cloud.dispose();
+  }
+}

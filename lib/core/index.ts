@@ -165,9 +165,9 @@ class WasmSurface extends Owner<SurfaceHandle> implements Surface {
   }
 }
 
-/** The whole pipeline of `surface` in one call. */
-function skeletonOf(surface: Surface, options: Partial<Options>): Skeleton {
-  const pipeline = surface.pipeline(options);
+/** The whole pipeline of a surface or cloud in one call. */
+function skeletonOf(shape: { pipeline(options: Partial<Options>): Pipeline }, options: Partial<Options>): Skeleton {
+  const pipeline = shape.pipeline(options);
   try {
     return pipeline.finish();
   } finally {
@@ -269,6 +269,7 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
 
   constructor(
     handle: CloudHandle,
+    private readonly module: CscdModule,
     private readonly unwrap: Unwrap,
   ) {
     super(handle, 'cloud');
@@ -277,6 +278,14 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
 
   distance(source: number): Float64Array {
     return this.unwrap(this.live().distance(source));
+  }
+
+  pipeline(options: Partial<Options> = {}): Pipeline {
+    return new WasmPipeline(opened(new this.module.CloudPipeline(this.live(), options), this.unwrap), this.unwrap);
+  }
+
+  skeleton(options: Partial<Options> = {}): Skeleton {
+    return skeletonOf(this, options);
   }
 
   referenceDistance(source: number): Float64Array {
@@ -343,7 +352,7 @@ class WasmCore implements Core {
   }
 
   openCloud(cloud: CloudArrays, options: Partial<CloudOptions> = {}): Cloud {
-    return new WasmCloud(opened(new this.module.Cloud(cloud.positions, cloud.normals, options), this.unwrapCloud), this.unwrapCloud);
+    return new WasmCloud(opened(new this.module.Cloud(cloud.positions, cloud.normals, options), this.unwrapCloud), this.module, this.unwrapCloud);
   }
 
   openRefinedSurface(mesh: MeshArrays): RefinedSurface {

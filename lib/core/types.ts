@@ -380,6 +380,10 @@ export interface Cloud {
   readonly facts: CloudFacts;
   /** Geodesic distance (heat method) from one point to every point; Infinity in other components. */
   distance(source: number): Float64Array;
+  /** CSCD-PC as a resumable job (the mesh's Pipeline on the cloud: the same steps, rounds and records). */
+  pipeline(options?: Partial<Options>): Pipeline;
+  /** The whole of CSCD-PC in one call; `vertexToNode` gives each point its node. */
+  skeleton(options?: Partial<Options>): Skeleton;
   /** Test-only: the same by geometry-central's PointCloudHeatSolver, which `distance` replaces (docs/pointcloud.md). */
   referenceDistance(source: number): Float64Array;
   /** Test-only: geodesic distance from the nearest of several points to every point. */

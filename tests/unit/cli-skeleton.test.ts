@@ -191,7 +191,7 @@ describe('cscd skeleton usage', () => {
   });
 
   it('is listed in the help with its options', async () => {
-    expect((await cscd('--help')).stdout).toMatch(/skeleton <mesh> \[options\]/);
+    expect((await cscd('--help')).stdout).toMatch(/skeleton <mesh\|cloud> \[options\]/);
     const help = (await cscd('help', 'skeleton')).stdout;
     expect(help).toMatch(/--n N\|auto\s+number of sources/);
     expect(help).toMatch(/--format json\|ply\|obj\|swc/);

@@ -20,7 +20,7 @@ describe('cscd (child process)', () => {
     const help = cscdProcess(['--help']);
     expect(help.status).toBe(0);
     expect(help.stdout).toMatch(/^cscd \d+\.\d+\.\d+: curve skeletons/);
-    expect(help.stdout).toMatch(/skeleton <mesh> \[options\]/);
+    expect(help.stdout).toMatch(/skeleton <mesh\|cloud> \[options\]/);
     expect(help.stderr).toBe('');
     const { version } = JSON.parse(readFileSync(path.join(repoRoot, 'package.json'), 'utf8')) as { version: string };
     expect(cscdProcess(['--version'])).toMatchObject({ status: 0, stdout: `${version}\n`, stderr: '' });

@@ -8,6 +8,7 @@
 #include "mesh/separator.h"
 #include "mesh/surface.h"
 #include "pointcloud/cloud.h"
+#include "pointcloud/realization.h"
 #include "pointcloud/winding.h"
 #include "pointcloud/shorten.h"
 #include "pointcloud/separator.h"
@@ -415,6 +416,29 @@ val toVal(const CloudNeighbourhood& n) {
   return o;
 }
 
+template <>
+struct CandidateRecord<PointCloudRealization::Candidate> {
+  static val write(const PointCloudRealization::Candidate& c, const Cloud&) {
+    val o = baseRecord(c);
+    o.set("points", toTypedArray("Uint32Array", std::vector<uint32_t>(c.points.begin(), c.points.end())));
+    o.set("reach", toFloat64Array(c.reach));
+    return o;
+  }
+
+  static PointCloudRealization::Candidate read(const val& o, Cloud& cloud) {
+    PointCloudRealization::Candidate c;
+    readBaseRecord(o, c);
+    for (uint32_t p : convertJSArrayToNumberVector<uint32_t>(o["points"])) {
+      if (p >= cloud.pointCount()) throw InputError("a candidate's point is not a point of this cloud");
+      c.points.push_back(p);
+    }
+    if (c.points.size() != c.loop.size()) throw InputError("a candidate's points do not match its loop");
+    c.reach = convertJSArrayToNumberVector<double>(o["reach"]);
+    if (c.reach.size() != cloud.pointCount()) throw InputError("a candidate's reach does not match this cloud");
+    return c;
+  }
+};
+
 // The Cloud of CSCD-PC, opened with the options (only `neighbours` matters to it).
 class CloudBinding {
 public:
@@ -429,6 +453,7 @@ public:
   val error() const { return failure ? toVal(*failure) : val::null(); }
 
   val facts() const { return cloud ? toVal(cloud->facts()) : val::null(); }
+  Cloud* shape() const { return cloud.get(); }
 
   val distance(double point) {
     return reportingErrors([&] { return toFloat64Array(cloud->geodesics().fromPoint(checkedPoint(point))); });
@@ -539,6 +564,7 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("separator", &SurfaceBinding::separator)
       .function("distanceFromPoints", &SurfaceBinding::distanceFromPoints);
   bindPipeline<MeshRealization, SurfaceBinding>("Pipeline");
+  bindPipeline<PointCloudRealization, CloudBinding>("CloudPipeline");
   class_<CloudBinding>("Cloud")
       .constructor<const val&, const val&, const val&>()
       .function("error", &CloudBinding::error)

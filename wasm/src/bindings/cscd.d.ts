@@ -54,6 +54,7 @@ export interface CscdModule {
   Surface: new (positions: Float64Array | Float32Array, triangles: Uint32Array) => SurfaceHandle;
   Pipeline: new (surface: SurfaceHandle, options: object) => PipelineHandle;
   Cloud: new (positions: Float64Array, normals: Float32Array | null, options: object) => CloudHandle;
+  CloudPipeline: new (cloud: CloudHandle, options: object) => PipelineHandle;
 }
 
 export interface CscdModuleOptions {

@@ -7,6 +7,10 @@
 
 namespace cscd {
 
+// Coverage radius of the auto mode, as a share of the bounding-box diagonal: what lies this near a
+// source or a separator is covered.
+constexpr double kCoverageRadius = 0.03;
+
 // Adaptive sampling of sources (paper Sec. 4.1.7). The first source is drawn uniformly over the
 // surface; then vertex i is drawn with probability proportional to A_i (exp(d_i / s) - 1), where d_i
 // is the geodesic distance from i to the sources and separators found so far, A_i the vertex area

@@ -9,12 +9,6 @@
 
 namespace cscd {
 
-// Coverage radius of the auto mode: 3% of the bounding-box diagonal.
-constexpr double kCoverageRadius = 0.03;
-// Loops closer than one mean edge length overlap: a slab between them too thin to hold a vertex would
-// let the regions on either side touch and form spurious junctions.
-constexpr double kOverlapTolerance = 1.0;
-
 namespace {
 
 Samples vertexSamplesOf(Surface& surface) {

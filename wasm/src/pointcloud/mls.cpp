@@ -115,4 +115,6 @@ MlsPoint MlsSurface::project(Vector3 query) const {
   return result;
 }
 
+size_t MlsSurface::nearestPoint(Vector3 query) const { return finder->kNearest(query, 1).front(); }
+
 } // namespace cscd

@@ -30,6 +30,9 @@ public:
 
   MlsPoint project(geometrycentral::Vector3 query) const;
 
+  // The index of the cloud point nearest to `query`.
+  size_t nearestPoint(geometrycentral::Vector3 query) const;
+
 private:
   std::vector<geometrycentral::Vector3> points;
   size_t neighbours;

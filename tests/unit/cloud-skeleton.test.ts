@@ -1,0 +1,88 @@
+// CSCD-PC end to end (pointcloud/realization.cpp on the framework's Pipeline), on small clouds sampled
+// from shared meshes: the topology of the source shape, the error against the source mesh beside
+// CSCD-M's on that mesh, the same skeleton on a second run, and the CLI.
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { beforeAll, describe, expect, it } from 'vitest';
+import { loadCoreNode, type Core, type Skeleton } from '../../lib/core/node.ts';
+import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
+import { fixture, sharedMesh } from '../paths.ts';
+import { cscd } from './support/cli.ts';
+import { readMesh } from './support/meshes.ts';
+
+function readCloud(file: string): ParsedCloud {
+  const shape = parseShape(new Uint8Array(readFileSync(file)), path.basename(file));
+  if (shape.kind !== 'cloud') throw new Error(`${file} holds a mesh`);
+  return shape;
+}
+
+function leaves(skeleton: Skeleton): number {
+  const degree = new Array(skeleton.radii.length).fill(0);
+  for (const node of skeleton.edges) degree[node]++;
+  return degree.filter((d) => d === 1).length;
+}
+
+let core: Core;
+beforeAll(async () => {
+  core = await loadCoreNode();
+});
+
+const bob = readCloud(fixture('clouds', 'bob_subsample.ply'));
+const hand = readCloud(fixture('clouds', 'hand_subsample.ply'));
+
+describe('CSCD-PC skeletons', () => {
+  it('keeps the handle of bob, with an error against the bob mesh near CSCD-M on it, the same on a second run', () => {
+    const cloud = core.openCloud(bob);
+    let first: Skeleton, second: Skeleton;
+    try {
+      first = cloud.skeleton({ n: 40, seed: 1 });
+      second = cloud.skeleton({ n: 40, seed: 1 });
+    } finally {
+      cloud.dispose();
+    }
+    expect(first.stats.cycles).toBe(1);
+    expect(Array.from(second.nodes)).toEqual(Array.from(first.nodes));
+    expect(Array.from(second.edges)).toEqual(Array.from(first.edges));
+    expect(first.vertexToNode.length).toBe(bob.positions.length / 3);
+
+    const mesh = readMesh(sharedMesh('bob.ply'));
+    const surface = core.openRefinedSurface(mesh);
+    let onMesh: Skeleton;
+    try {
+      onMesh = surface.skeleton({ n: 40, seed: 1 });
+    } finally {
+      surface.dispose();
+    }
+    const error = (s: Skeleton) => core.evaluate(mesh, { nodes: s.nodes, edges: s.edges, radii: null }).reconError;
+    expect(error(first)).toBeLessThan(1.5 * error(onMesh));
+  });
+
+  it('gives the hand a leaf per finger and no cycle', () => {
+    const cloud = core.openCloud(hand);
+    try {
+      const skeleton = cloud.skeleton({ n: 60, seed: 1 });
+      expect(skeleton.stats.cycles).toBe(0);
+      expect(leaves(skeleton)).toBeGreaterThanOrEqual(5);
+    } finally {
+      cloud.dispose();
+    }
+  });
+
+  it('runs from the CLI', async () => {
+    const { status, stdout, stderr } = await cscd('skeleton', fixture('clouds', 'bob_subsample.ply'), '--n', '12');
+    expect(stderr).toBe('');
+    expect(status).toBe(0);
+    const skeleton = JSON.parse(stdout);
+    expect(skeleton.nodes.length).toBeGreaterThan(1);
+    expect(skeleton.vertexToNode.length).toBe(bob.positions.length / 3);
+  });
+
+  it('refuses --decimate on a cloud and --neighbours on a mesh', async () => {
+    const onCloud = await cscd('skeleton', fixture('clouds', 'bob_subsample.ply'), '--decimate', '100');
+    expect(onCloud.status).not.toBe(0);
+    expect(onCloud.stderr).toContain('--decimate does not apply');
+    const onMesh = await cscd('skeleton', sharedMesh('bob.ply'), '--neighbours', '12');
+    expect(onMesh.status).not.toBe(0);
+    expect(onMesh.stderr).toContain('--neighbours does not apply');
+  });
+});

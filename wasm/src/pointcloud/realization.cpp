@@ -1,0 +1,133 @@
+#include "pointcloud/realization.h"
+
+#include "cscd/centre.h"
+#include "cscd/measures.h"
+#include "cscd/overlap.h"
+#include "evaluate/tube_radii.h"
+#include "pointcloud/separator.h"
+#include "pointcloud/shorten.h"
+
+#include <algorithm>
+#include <set>
+
+using namespace geometrycentral;
+
+namespace cscd {
+
+namespace {
+
+Samples pointSamplesOf(Cloud& cloud) {
+  Samples samples;
+  const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();
+  samples.positions = neighbourhood.positions();
+  samples.weights = cloud.pointAreas();
+  for (const auto& [a, b] : neighbourhood.graph().edgeVertices) samples.edges.push_back({uint32_t(a), uint32_t(b)});
+  return samples;
+}
+
+} // namespace
+
+PointCloudRealization::PointCloudRealization(Cloud& cloud_, const Options& options_)
+    : cloud(cloud_), options(options_), pointSamples(pointSamplesOf(cloud_)),
+      sampler(pointSamples.positions, pointSamples.weights, cloud_.facts().bboxDiagonal, options_.seed),
+      winding(cloud_) {}
+
+PointCloudRealization::Candidate PointCloudRealization::separator(size_t source) {
+  Candidate candidate;
+  candidate.source = source;
+  CloudSeparatorStages stages = computeCloudSeparatorStages(cloud, source, options);
+  if (stages.status == SeparatorStatus::Ok) {
+    const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();
+    std::vector<Vector3> approximate;
+    for (size_t p : stages.traced.loop) approximate.push_back(neighbourhood.position(p));
+    // The sphere reaches exactly the farthest point of the approximate loop (paper Sec. 4.1.6).
+    std::optional<Sphere> sphere;
+    if (options.sphere) {
+      const Vector3 centre = neighbourhood.position(source);
+      double radius = 0;
+      for (const Vector3& p : approximate) radius = std::max(radius, norm(p - centre));
+      sphere = Sphere{centre, radius};
+    }
+    if (approximate.size() >= 3) {
+      ShortenedCloudLoop shortened = shortenLoop(cloud, approximate, sphere);
+      if (shortened.failureKind == ShortenedCloudLoop::Failure::None) {
+        candidate.found = true;
+        candidate.loop = std::move(shortened.loop);
+        candidate.length = shortened.length;
+        candidate.score = separatorScore(shortened.areas, shortened.length);
+        candidate.centroidInside = inside(loopCentroid(candidate.loop, true));
+        for (const Vector3& p : candidate.loop) candidate.points.push_back(cloud.mls().nearestPoint(p));
+      }
+    }
+  }
+  std::vector<size_t> covered = candidate.points;
+  covered.push_back(source);
+  candidate.reach = cloud.geodesics().fromPoints(covered);
+  return candidate;
+}
+
+void PointCloudRealization::cover(Candidate& candidate) {
+  sampler.cover(candidate.reach);
+  candidate.reach = {};
+}
+
+double PointCloudRealization::coverage() const { return sampler.coverage(kCoverageRadius * cloud.facts().bboxDiagonal); }
+
+std::vector<std::vector<size_t>> PointCloudRealization::overlaps(const Selection<Candidate>& kept) const {
+  std::vector<std::vector<Vector3>> loops;
+  for (const Candidate* c : kept) loops.push_back(c->loop);
+  return overlappingLoops(loops, std::vector<char>(kept.size(), 1), kOverlapTolerance * cloud.facts().meanSpacing);
+}
+
+Regions PointCloudRealization::regions(const Selection<Candidate>& packed) {
+  const size_t n = cloud.pointCount();
+  std::vector<uint32_t> seeds(n, kNoRegion);
+  std::vector<double> seedDistance(n, INFINITY), distance(n, INFINITY);
+  std::vector<size_t> all;
+  for (uint32_t k = 0; k < packed.size(); k++)
+    for (size_t i = 0; i < packed[k]->points.size(); i++) {
+      const size_t p = packed[k]->points[i];
+      const double d = norm(pointSamples.positions[p] - packed[k]->loop[i]);
+      if (d < seedDistance[p]) {
+        seedDistance[p] = d;
+        seeds[p] = k;
+      }
+      all.push_back(p);
+    }
+  if (!all.empty()) distance = cloud.geodesics().fromPoints(all);
+
+  const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();
+  const NeighbourGraph& graph = neighbourhood.graph();
+  std::vector<std::vector<uint32_t>> neighbours(n);
+  for (size_t p = 0; p < n; p++)
+    for (size_t k = graph.rowStart[p]; k < graph.rowStart[p + 1]; k++) neighbours[p].push_back(uint32_t(graph.neighbour[k]));
+  // Regions touch where a triangle of the tufted triangulation (the points' local triangulations) has
+  // points of both; only triangles whose three edges the neighbourhood graph kept, so that no region
+  // touches another across a gap the graph does not bridge (two fingers side by side).
+  std::set<std::array<size_t, 2>> kept;
+  for (const auto& [a, b] : graph.edgeVertices) kept.insert({std::min(a, b), std::max(a, b)});
+  auto inGraph = [&](size_t a, size_t b) { return kept.count({std::min(a, b), std::max(a, b)}) > 0; };
+  std::vector<std::array<uint32_t, 3>> triangles;
+  for (surface::Face f : cloud.geometry().tuftedMesh->faces()) {
+    std::array<uint32_t, 3> t;
+    size_t k = 0;
+    for (surface::Vertex v : f.adjacentVertices()) t[k++] = uint32_t(v.getIndex());
+    if (inGraph(t[0], t[1]) && inGraph(t[1], t[2]) && inGraph(t[0], t[2])) triangles.push_back(t);
+  }
+  const ElementGraph elements{pointSamples.positions, pointSamples.weights, neighbours, pointSamples.edges,
+                              neighbourhood.pointComponent(), triangles};
+  return growRegions(elements, std::move(distance), std::move(seeds), packed.size());
+}
+
+void PointCloudRealization::centre(SkeletonGraph& graph, const Selection<Candidate>& packed) const {
+  centreNodes(graph, packed, [](const Candidate& c) { return loopNormal(c.loop); },
+              [&](const Vector3& p) { return inside(p); });
+}
+
+void PointCloudRealization::fitRadii(SkeletonGraph& graph) const {
+  SkeletonCurves curves{graph.nodes, {}, {}};
+  for (const auto& e : graph.edges) curves.edges.push_back({uint32_t(e[0]), uint32_t(e[1])});
+  graph.radii = tubeRadii(pointSamples.positions, curves);
+}
+
+} // namespace cscd

@@ -1,11 +1,11 @@
 import { writeFile } from 'node:fs/promises';
 import os from 'node:os';
 import path from 'node:path';
-import { openNodePool } from '../../lib/core/node-pool.ts';
+import { openNodeCloudPool, openNodePool, type NodePool } from '../../lib/core/node-pool.ts';
 import { AUTO_N, type RunSettings } from '../../lib/core/options.ts';
 import { runStage1 } from '../../lib/core/pool.ts';
-import { poolSize } from '../../lib/core/pool-size.ts';
-import type { CloudOptions, MeshArrays, Options, Pipeline, PipelineProgress, Skeleton } from '../../lib/core/types.ts';
+import { CLOUD_VERTICES_PER_POINT, poolSize } from '../../lib/core/pool-size.ts';
+import type { CloudOptions, Options, Pipeline, PipelineProgress, Skeleton } from '../../lib/core/types.ts';
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
 import {
   UsageError, decimateIfAsked, decimateOption, openCloud, openSolver, readShape, refuseFlags,
@@ -13,14 +13,17 @@ import {
 } from '../command.ts';
 import { cloudFlagSpecs, cloudOptionsFromFlags, optionFlagSpecs, optionsFromFlags, settingFlagSpecs, settingsFromFlags } from './separator.ts';
 
-/** Threads of stage 1 (lib/core/pool-size.ts: the page's rule, with this machine's cores and memory). */
-function threadsFor(settings: RunSettings, options: Options, mesh: MeshArrays): number {
+/**
+ * Threads of stage 1 (lib/core/pool-size.ts: the page's rule, with this machine's cores and memory);
+ * `vertices`: of the mesh as read (refinement only touches coarse meshes, which are small), or a
+ * cloud's points in mesh vertices of the same memory.
+ */
+function threadsFor(settings: RunSettings, options: Options, vertices: number): number {
   return poolSize({
     workers: settings.workers,
     cores: os.availableParallelism(),
     memoryGB: os.totalmem() / 2 ** 30,
-    // The mesh as read: refinement only touches coarse meshes, which are small.
-    vertices: mesh.positions.length / 3,
+    vertices,
     roundSize: options.roundSize,
     sourcesLeft: options.n === 'auto' ? AUTO_N.max : options.n,
   }).workers;
@@ -79,7 +82,7 @@ export const skeleton: Command = {
     'separator from each (stage 1, as `cscd separator`), then keeps the best non-overlapping ones and',
     'builds the skeleton from the regions they bound (stage 2). On a terminal, progress and a summary',
     '(nodes, edges, cycles, N, seconds) go to stderr. Formats and keys: docs/cli.md. A point cloud (a file',
-    'without faces) runs CSCD-PC on this thread (--workers does not apply yet); vertexToNode is then per point.',
+    'without faces) runs CSCD-PC, on worker threads as meshes do; vertexToNode is then per point.',
   ].join('\n'),
   async run([file], values, io) {
     const cloudOptions = cloudOptionsFromFlags(values);
@@ -94,7 +97,7 @@ export const skeleton: Command = {
       if (shape.kind === 'cloud') {
         refuseFlags(values, ['decimate'], file, 'point cloud');
         options = cloudOptions;
-        result = await cloudSkeleton(shape, cloudOptions, file, io, progress);
+        result = await cloudSkeleton(shape, cloudOptions, settings, file, io, progress);
       } else {
         refuseFlags(values, Object.keys(cloudFlagSpecs()), file, 'mesh');
         options = optionsFromFlags(values);
@@ -142,30 +145,36 @@ async function runPipeline(pipeline: Pipeline, workers: Parameters<typeof runSta
 }
 
 async function meshSkeleton(mesh: InputMesh, options: Options, settings: RunSettings, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {
-  const workers = threadsFor(settings, options, mesh);
-  // The pool's threads open the mesh while this one does.
-  const opening = workers > 1 ? openNodePool(mesh, options, { workers }) : null;
-  const surface = await openSolver(mesh, file, io).catch(async (error) => {
+  const workers = threadsFor(settings, options, mesh.positions.length / 3);
+  return onPool(workers > 1 ? openNodePool(mesh, options, { workers }) : null, () => openSolver(mesh, file, io), options, file, io, progress);
+}
+
+async function cloudSkeleton(shape: InputCloud, options: CloudOptions, settings: RunSettings, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {
+  const workers = threadsFor(settings, options, CLOUD_VERTICES_PER_POINT * (shape.positions.length / 3));
+  return onPool(workers > 1 ? openNodeCloudPool(shape, options, { workers }) : null, () => openCloud(shape, options, file, io), options, file, io, progress);
+}
+
+/** Opens the shape here while the pool's threads open it too, then runs the pipeline on them. */
+async function onPool(
+  opening: Promise<NodePool> | null,
+  open: () => Promise<{ pipeline(options: Options): Pipeline; dispose(): void }>,
+  options: Options,
+  file: string,
+  io: CliIo,
+  progress: ProgressLine,
+): Promise<Skeleton> {
+  const shape = await open().catch(async (error) => {
     await opening?.then((pool) => pool.close(), () => undefined);
     throw error;
   });
   const pool = await opening?.catch((error) => {
-    surface.dispose();
+    shape.dispose();
     throw error;
   });
   try {
-    return await runPipeline(surface.pipeline(options), pool?.workers ?? [], options, file, io, progress);
+    return await runPipeline(shape.pipeline(options), pool?.workers ?? [], options, file, io, progress);
   } finally {
     await pool?.close();
-    surface.dispose();
-  }
-}
-
-async function cloudSkeleton(shape: InputCloud, options: CloudOptions, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {
-  const cloud = await openCloud(shape, options, file, io);
-  try {
-    return await runPipeline(cloud.pipeline(options), [], options, file, io, progress);
-  } finally {
-    cloud.dispose();
+    shape.dispose();
   }
 }

@@ -1,10 +1,10 @@
 // A pool of worker threads for stage 1 in Node (CLI, library): each thread loads its own core, opens
-// the same mesh as the caller (refined as openRefinedSurface refines it) and a pipeline with the same
+// the same mesh as the caller (refined as openRefinedSurface refines it) or the same point cloud and a pipeline with the same
 // options, and computes the separators of the sources it is sent (lib/core/pool.ts).
 import { Worker } from 'node:worker_threads';
 import { compiledCore } from './node.ts';
 import { PooledWorker, startError, type PoolReady, type PoolReply, type PoolRequest, type PoolStart } from './pool-worker.ts';
-import { CoreError, type MeshArrays, type Options } from './types.ts';
+import { CoreError, type CloudArrays, type CloudOptions, type MeshArrays, type Options } from './types.ts';
 
 export interface PoolSettings {
   /** Threads that compute stage 1 (1: none but the caller's, no pool); the caller's only draws and accepts. */
@@ -31,14 +31,21 @@ export class ThreadWorker extends PooledWorker {
 }
 
 /** `workers` threads (none for 1), each ready (its surface and pipeline open) when this resolves. */
-export async function openNodePool(mesh: MeshArrays, options: Partial<Options>, settings: PoolSettings): Promise<NodePool> {
+export function openNodePool(mesh: MeshArrays, options: Partial<Options>, settings: PoolSettings): Promise<NodePool> {
+  return openPool(settings, (wasm) => ({ mesh: { positions: mesh.positions, triangles: mesh.triangles }, refine: true, options, memoryLimitMB: settings.memoryLimitMB, wasm }));
+}
+
+/** The same for a point cloud: each thread opens the cloud (with `options.neighbours`) and its pipeline. */
+export function openNodeCloudPool(cloud: CloudArrays, options: Partial<CloudOptions>, settings: PoolSettings): Promise<NodePool> {
+  return openPool(settings, (wasm) => ({ cloud: { positions: cloud.positions, normals: cloud.normals }, options, memoryLimitMB: settings.memoryLimitMB, wasm }));
+}
+
+async function openPool(settings: PoolSettings, start: (wasm: WebAssembly.Module) => PoolStart): Promise<NodePool> {
   const count = settings.workers >= 2 ? Math.floor(settings.workers) : 0;
   if (count === 0) return new NodePool([]);
   // One compile of the core for all threads (each instantiates its own copy of it).
-  const wasm = await compiledCore();
-  const threads = Array.from({ length: count }, () => new Worker(new URL('./node-pool-thread.mjs', import.meta.url), {
-    workerData: { mesh: { positions: mesh.positions, triangles: mesh.triangles }, refine: true, options, memoryLimitMB: settings.memoryLimitMB, wasm } satisfies PoolStart,
-  }));
+  const workerData = start(await compiledCore());
+  const threads = Array.from({ length: count }, () => new Worker(new URL('./node-pool-thread.mjs', import.meta.url), { workerData }));
   try {
     await Promise.all(threads.map((thread) => new Promise<void>((resolve, reject) => {
       thread.once('message', (m: PoolReady) => {

@@ -1,29 +1,35 @@
 // What a pool's worker and its owner say to each other, the same for a Node worker thread
 // (node-pool.ts) and a Web Worker of the page (web/src/worker/page-pool.ts): the worker opens the mesh
-// and a pipeline with the owner's options, says it is ready, then answers {id, sources} with the
+// (or point cloud) and a pipeline with the owner's options, says it is ready, then answers {id, sources} with the
 // sources' candidate records (their buffers transferred) or with an error of the core's kind.
 import { createCore } from './index.ts';
 import type { SeparatorWorker } from './pool.ts';
-import { CoreError, type CandidateRecord, type CoreErrorKind, type MeshArrays, type Options, type Pipeline } from './types.ts';
+import { CoreError, type CandidateRecord, type CloudArrays, type CloudOptions, type CoreErrorKind, type MeshArrays, type Options, type Pipeline } from './types.ts';
 
 /** `crash`: the WebAssembly instance aborted; the worker is gone. */
 export type PoolErrorKind = CoreErrorKind | 'crash';
 
-/** What a pool worker is started with. */
-export interface PoolStart {
+interface PoolStartCommon {
   /** The core compiled once by the owner; each worker instantiates its own. */
   wasm: WebAssembly.Module;
-  mesh: MeshArrays;
-  /**
-   * true: open `mesh` refined as Core.openRefinedSurface refines it (Node: the owner has the mesh as
-   * read); false: open it as given (the page: the geometry worker's mesh is already refined).
-   */
-  refine: boolean;
-  options: Partial<Options>;
   memoryLimitMB?: number;
   /** Test hook: the worker's request with this number (1: its first) aborts as a crashed core would. */
   crashOnRequest?: number;
 }
+
+/** What a pool worker is started with: a mesh, or a point cloud, and the pipeline's options. */
+export type PoolStart = PoolStartCommon & (
+  | {
+    mesh: MeshArrays;
+    /**
+     * true: open `mesh` refined as Core.openRefinedSurface refines it (Node: the owner has the mesh as
+     * read); false: open it as given (the page: the geometry worker's mesh is already refined).
+     */
+    refine: boolean;
+    options: Partial<Options>;
+  }
+  | { cloud: CloudArrays; options: Partial<CloudOptions> }
+);
 
 export type PoolReady = { ready: true } | { error: { message: string; kind: CoreErrorKind } };
 export interface PoolRequest {
@@ -39,7 +45,7 @@ const messageOf = (error: unknown) => (error instanceof Error ? error.message : 
 function recordBuffers(records: CandidateRecord[]): ArrayBuffer[] {
   return records.flatMap((r) => [
     r.loop.buffer,
-    ...(r.points ? [r.points.kinds.buffer, r.points.elements.buffer, r.points.coords.buffer] : []),
+    ...(r.points instanceof Uint32Array ? [r.points.buffer] : r.points ? [r.points.kinds.buffer, r.points.elements.buffer, r.points.coords.buffer] : []),
     ...(r.reach ? [r.reach.buffer] : []),
   ]) as ArrayBuffer[];
 }
@@ -56,7 +62,8 @@ export async function servePoolWorker(start: PoolStart, port: PoolPort): Promise
   let pipeline: Pipeline;
   try {
     const core = await createCore(start.wasm, { memoryLimitMB: start.memoryLimitMB });
-    pipeline = (start.refine ? core.openRefinedSurface(start.mesh) : core.openSurface(start.mesh)).pipeline(start.options);
+    if ('cloud' in start) pipeline = core.openCloud(start.cloud, start.options).pipeline(start.options);
+    else pipeline = (start.refine ? core.openRefinedSurface(start.mesh) : core.openSurface(start.mesh)).pipeline(start.options);
   } catch (error) {
     port.post({ error: { message: messageOf(error), kind: kindOf(error) } });
     return;

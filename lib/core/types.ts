@@ -274,8 +274,9 @@ export interface CandidateRecord {
   length: number;
   score: number;
   centroidInside: boolean;
-  points?: { kinds: Uint8Array; elements: Uint32Array; coords: Float64Array };
-  /** On a mesh: the geodesic distance from the loop and the source per vertex, what the candidate covers. */
+  /** On a mesh: the loop's surface points; on a cloud: the point nearest to each loop point. */
+  points?: { kinds: Uint8Array; elements: Uint32Array; coords: Float64Array } | Uint32Array;
+  /** The geodesic distance from the loop and the source per vertex (or point), what the candidate covers. */
   reach?: Float64Array;
 }
 

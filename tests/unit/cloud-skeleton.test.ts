@@ -5,6 +5,10 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core, type Skeleton } from '../../lib/core/node.ts';
+import { openNodeCloudPool } from '../../lib/core/node-pool.ts';
+import { defaultCloudOptions } from '../../lib/core/options.ts';
+import { runStage1 } from '../../lib/core/pool.ts';
+import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
 import { fixture, sharedMesh } from '../paths.ts';
 import { cscd } from './support/cli.ts';
@@ -67,6 +71,28 @@ describe('CSCD-PC skeletons', () => {
       cloud.dispose();
     }
   });
+
+  it('gives the same skeleton, byte for byte, on one thread and on 1 or 2 worker threads', async () => {
+    const options = { ...defaultCloudOptions, n: 8, roundSize: 4, seed: 3 };
+    const json = (s: Skeleton) => writeSkeletonJson({ ...s, stats: { ...s.stats, timings: {} } }, { mesh: 'bob_subsample.ply', options });
+    const pool = await openNodeCloudPool(bob, options, { workers: 2 });
+    const cloud = core.openCloud(bob, options);
+    try {
+      const alone = json(cloud.skeleton(options));
+      for (const workers of [pool.workers.slice(0, 1), pool.workers]) {
+        const pipeline = cloud.pipeline(options);
+        try {
+          await runStage1(pipeline, workers, {});
+          expect(json(pipeline.finish()), `${workers.length} worker threads`).toBe(alone);
+        } finally {
+          pipeline.dispose();
+        }
+      }
+    } finally {
+      cloud.dispose();
+      await pool.close();
+    }
+  }, 120_000);
 
   it('runs from the CLI', async () => {
     const { status, stdout, stderr } = await cscd('skeleton', fixture('clouds', 'bob_subsample.ply'), '--n', '12');

@@ -347,6 +347,11 @@ class WasmCore implements Core {
     return this.unwrap(result) as Evaluation;
   }
 
+  evaluateCloud(cloud: CloudArrays, skeleton: SkeletonInput): Evaluation {
+    const result = this.module.evaluateCloud(cloud.positions, skeleton.nodes, skeleton.edges, skeleton.radii ?? null);
+    return this.unwrapCloud(result) as Evaluation;
+  }
+
   openSurface(mesh: MeshArrays): Surface {
     return new WasmSurface(opened(new this.module.Surface(mesh.positions, mesh.triangles), this.unwrap), this.module, this.unwrap);
   }

@@ -462,6 +462,8 @@ export interface Core {
   openCloud(cloud: CloudArrays, options?: Partial<CloudOptions>): Cloud;
   /** The reconstruction error of a skeleton against a mesh (the mesh need not be manifold). */
   evaluate(mesh: MeshArrays, skeleton: SkeletonInput): Evaluation;
+  /** The same against a point cloud's points (radii, when derived, fitted around the points). */
+  evaluateCloud(cloud: CloudArrays, skeleton: SkeletonInput): Evaluation;
   /**
    * The core's memory in MB: its WebAssembly memory, which grows as the core needs and never shrinks,
    * so this is the most it has used so far (for the bench's memory per worker).

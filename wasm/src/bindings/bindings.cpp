@@ -180,18 +180,30 @@ val toVal(const Evaluation& e) {
 }
 
 // Reconstruction error of a skeleton (nodes xyz, edges as node pairs, radii or null) against a mesh.
-val evaluate(const val& positions, const val& triangles, const val& nodes, const val& edges, const val& radii) {
-  return reportingErrors([&] {
-    std::vector<double> xyz = convertJSArrayToNumberVector<double>(nodes);
-    std::vector<uint32_t> pairs = convertJSArrayToNumberVector<uint32_t>(edges);
-    if (xyz.size() % 3 != 0) throw InputError("skeleton nodes must be xyz triples");
-    if (pairs.size() % 2 != 0) throw InputError("skeleton edges must be pairs of node indices");
-    SkeletonCurves skeleton;
-    for (size_t i = 0; i < xyz.size(); i += 3) skeleton.nodes.push_back({xyz[i], xyz[i + 1], xyz[i + 2]});
-    for (size_t i = 0; i < pairs.size(); i += 2) skeleton.edges.push_back({pairs[i], pairs[i + 1]});
-    if (!radii.isNull() && !radii.isUndefined()) skeleton.radii = convertJSArrayToNumberVector<double>(radii);
+SkeletonCurves toSkeletonCurves(const val& nodes, const val& edges, const val& radii) {
+  std::vector<double> xyz = convertJSArrayToNumberVector<double>(nodes);
+  std::vector<uint32_t> pairs = convertJSArrayToNumberVector<uint32_t>(edges);
+  if (xyz.size() % 3 != 0) throw InputError("skeleton nodes must be xyz triples");
+  if (pairs.size() % 2 != 0) throw InputError("skeleton edges must be pairs of node indices");
+  SkeletonCurves skeleton;
+  for (size_t i = 0; i < xyz.size(); i += 3) skeleton.nodes.push_back({xyz[i], xyz[i + 1], xyz[i + 2]});
+  for (size_t i = 0; i < pairs.size(); i += 2) skeleton.edges.push_back({pairs[i], pairs[i + 1]});
+  if (!radii.isNull() && !radii.isUndefined()) skeleton.radii = convertJSArrayToNumberVector<double>(radii);
+  return skeleton;
+}
 
-    return toVal(evaluateSkeleton(toArrays(positions, triangles), std::move(skeleton)));
+val evaluate(const val& positions, const val& triangles, const val& nodes, const val& edges, const val& radii) {
+  return reportingErrors([&] { return toVal(evaluateSkeleton(toArrays(positions, triangles), toSkeletonCurves(nodes, edges, radii))); });
+}
+
+// The reconstruction error against a point cloud's points (xyz triples).
+val evaluateCloud(const val& positions, const val& nodes, const val& edges, const val& radii) {
+  return reportingErrors([&] {
+    const std::vector<double> xyz = convertJSArrayToNumberVector<double>(positions);
+    if (xyz.size() % 3 != 0) throw InputError("point positions must be xyz triples");
+    std::vector<geometrycentral::Vector3> points;
+    for (size_t i = 0; i < xyz.size(); i += 3) points.push_back({xyz[i], xyz[i + 1], xyz[i + 2]});
+    return toVal(evaluateSkeleton(points, toSkeletonCurves(nodes, edges, radii)));
   });
 }
 
@@ -554,6 +566,7 @@ EMSCRIPTEN_BINDINGS(cscd) {
   using namespace cscd::binding;
   function("inspect", &inspect);
   function("evaluate", &evaluate);
+  function("evaluateCloud", &evaluateCloud);
   function("optionLimits", &optionLimits); // test-only: tests/unit/options.test.ts
   class_<SurfaceBinding>("Surface")
       .constructor<const val&, const val&>()

@@ -49,6 +49,7 @@ export interface CscdModule {
     edges: Uint32Array,
     radii: Float64Array | null,
   ): object | CoreFailure;
+  evaluateCloud(positions: Float64Array, nodes: Float64Array, edges: Uint32Array, radii: Float64Array | null): object | CoreFailure;
   /** Test-only: the core's option defaults, ranges and auto-N constants. */
   optionLimits(): { defaults: Record<string, unknown>; ranges: Record<string, [number, number]>; autoN: Record<string, number> };
   Surface: new (positions: Float64Array | Float32Array, triangles: Uint32Array) => SurfaceHandle;

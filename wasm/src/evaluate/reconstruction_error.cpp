@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 namespace cscd {
 namespace {
@@ -64,38 +65,40 @@ double quantile(std::vector<double> values, double q) {
 
 } // namespace
 
-Evaluation evaluateSkeleton(const MeshArrays& mesh, SkeletonCurves skeleton) {
-  MeshFacts facts = checkMesh(mesh).facts;
+namespace {
+
+// The error of the reconstructed surface at `points` (those `used`), with the bounding box they span.
+// `deriveRadii` fits radii around the shape (a "mesh", a "point cloud") when the skeleton has none.
+template <class DeriveRadii>
+Evaluation evaluateAt(const std::vector<Vector3>& points, const std::vector<bool>& used, Vector3 lower, Vector3 upper,
+                      SkeletonCurves skeleton, const std::string& shape, DeriveRadii deriveRadii) {
   checkSkeleton(skeleton);
-  if (!(facts.bboxDiagonal > 0)) throw InputError("the mesh has no extent: its bounding box is a point");
+  const double diagonal = norm(upper - lower);
+  if (!(diagonal > 0)) throw InputError("the " + shape + " has no extent: its bounding box is a point");
 
   Evaluation result;
   StageClock clock(result.timings);
   result.nodes = skeleton.nodes.size();
   result.cycles = cycleCount(skeleton);
   result.radiiDerived = skeleton.radii.empty();
-  TriangleMesh input = toTriangleMesh(mesh);
-  if (result.radiiDerived) skeleton.radii = tubeRadii(input, skeleton);
+  if (result.radiiDerived) skeleton.radii = deriveRadii(skeleton);
   result.radii = skeleton.radii;
   clock.lap("radii");
 
-  Vector3 lower{facts.bboxMin[0], facts.bboxMin[1], facts.bboxMin[2]};
-  Vector3 upper{facts.bboxMax[0], facts.bboxMax[1], facts.bboxMax[2]};
   result.grid = reconstructionGrid(skeleton, lower, upper);
   result.surface = convolutionSurface(skeleton, result.grid);
   clock.lap("surface");
   if (result.surface.triangles.empty())
-    throw InputError("the skeleton's reconstructed surface is empty: its radii are too small for the mesh");
+    throw InputError("the skeleton's reconstructed surface is empty: its radii are too small for the " + shape);
 
   TriangleTree tree(result.surface.vertices, result.surface.triangles);
-  std::vector<bool> used = referencedVertices(input);
-  const double scale = 1e3 / (facts.bboxDiagonal * facts.bboxDiagonal);
-  result.vertexError.assign(input.vertices.size(), 0);
+  const double scale = 1e3 / (diagonal * diagonal);
+  result.vertexError.assign(points.size(), 0);
   std::vector<double> errors;
-  errors.reserve(input.vertices.size());
-  for (size_t v = 0; v < input.vertices.size(); v++) {
+  errors.reserve(points.size());
+  for (size_t v = 0; v < points.size(); v++) {
     if (!used[v]) continue;
-    result.vertexError[v] = tree.closest(input.vertices[v]).distance2 * scale;
+    result.vertexError[v] = tree.closest(points[v]).distance2 * scale;
     errors.push_back(result.vertexError[v]);
   }
   double sum = 0;
@@ -105,6 +108,28 @@ Evaluation evaluateSkeleton(const MeshArrays& mesh, SkeletonCurves skeleton) {
   result.p95 = quantile(errors, 0.95);
   clock.lap("distances");
   return result;
+}
+
+} // namespace
+
+Evaluation evaluateSkeleton(const MeshArrays& mesh, SkeletonCurves skeleton) {
+  MeshFacts facts = checkMesh(mesh).facts;
+  TriangleMesh input = toTriangleMesh(mesh);
+  return evaluateAt(input.vertices, referencedVertices(input), {facts.bboxMin[0], facts.bboxMin[1], facts.bboxMin[2]},
+                    {facts.bboxMax[0], facts.bboxMax[1], facts.bboxMax[2]}, std::move(skeleton), "mesh",
+                    [&](const SkeletonCurves& s) { return tubeRadii(input, s); });
+}
+
+Evaluation evaluateSkeleton(const std::vector<Vector3>& points, SkeletonCurves skeleton) {
+  if (points.empty()) throw InputError("the point cloud has no points");
+  Vector3 lower = points.front(), upper = points.front();
+  for (const Vector3& p : points) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) throw InputError("a point has a coordinate that is not a finite number");
+    lower = componentwiseMin(lower, p);
+    upper = componentwiseMax(upper, p);
+  }
+  return evaluateAt(points, std::vector<bool>(points.size(), true), lower, upper, std::move(skeleton), "point cloud",
+                    [&](const SkeletonCurves& s) { return tubeRadii(points, s); });
 }
 
 } // namespace cscd

@@ -31,4 +31,8 @@ struct Evaluation {
 // derived from the mesh (tubeRadii).
 Evaluation evaluateSkeleton(const MeshArrays& mesh, SkeletonCurves skeleton);
 
+// The same against a point cloud's points (CSCD-PC's skeletons scored by the cloud, radii derived
+// around the points); throws InputError for no points or non-finite ones.
+Evaluation evaluateSkeleton(const std::vector<Vector3>& points, SkeletonCurves skeleton);
+
 } // namespace cscd

@@ -15,8 +15,11 @@ import {
   type SettingSpec,
 } from '../../lib/core/options.ts';
 import { random } from '../../lib/core/random.ts';
-import type { CloudOptions, MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
-import { UsageError, openSolver, readMesh, type Command, type OptionSpec as CliOptionSpec, type OptionValues } from '../command.ts';
+import type { CloudOptions, CloudSeparatorStages, MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
+import {
+  UsageError, openCloud, openSolver, readShape, refuseFlags,
+  type CliIo, type Command, type InputCloud, type InputMesh, type OptionSpec as CliOptionSpec, type OptionValues,
+} from '../command.ts';
 
 export type Point = [number, number, number];
 
@@ -174,45 +177,99 @@ export function separatorJson(result: Separator, options: Options): SeparatorJso
   };
 }
 
+/** The JSON of `cscd separator` on a point cloud: the stages by point index and position. */
+export function cloudSeparatorJson(result: CloudSeparatorStages, options: CloudOptions) {
+  const edges: [number, number][] = [];
+  for (let i = 0; i + 1 < result.cutLocus.edges.length; i += 2) edges.push([result.cutLocus.edges[i], result.cutLocus.edges[i + 1]]);
+  return {
+    source: result.source,
+    status: result.status,
+    message: result.message,
+    distance: Array.from(result.distance),
+    cutLocus: {
+      points: toPoints(result.cutLocus.points),
+      edges,
+      vertices: Array.from(result.cutLocus.vertices),
+      root: result.cutLocus.root,
+      cycleRank: result.cutLocus.cycleRank,
+    },
+    target: result.targetPoint ? [...result.targetPoint] : null,
+    closed: true,
+    paths: [toPoints(result.paths[0]), toPoints(result.paths[1])],
+    approxLoop: toPoints(result.approxLoop),
+    loop: toPoints(result.loop),
+    sphere: result.sphere ? { center: [...result.sphere.center], radius: result.sphere.radius } : null,
+    length: result.length,
+    areas: [result.areas[0], result.areas[1]],
+    score: result.score,
+    centroidInside: result.centroidInside,
+    iterations: result.iterations,
+    timings: { ...result.timings },
+    options,
+  };
+}
+
 export const separator: Command = {
   name: 'separator',
-  summary: 'stage 1 of CSCD-M: one local separator (a shortened loop) from a source vertex, as JSON',
-  args: ['<mesh>'],
+  summary: 'stage 1 of CSCD: one local separator (a shortened loop) from a source vertex or point, as JSON',
+  args: ['<mesh|cloud>'],
   options: {
-    source: { type: 'string', value: 'V', description: 'source vertex index (0-based; default: a vertex drawn with the seed)' },
+    source: { type: 'string', value: 'V', description: 'source vertex (or point) index (0-based; default: one drawn with the seed)' },
     ...optionFlagSpecs({ pipeline: false }),
+    ...cloudFlagSpecs(),
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
   details: [
     'Writes {source, status, message, distance, cutLocus, boundaryExtremities, target, ends, closed, paths, approxLoop, loop, sphere,',
     'approxLength, length, areas, score, centroidInside, timings, options, refined} (see docs/cli.md). A source',
-    'without a separator is not an error: status tells why, with a warning on stderr and exit code 0.',
+    'without a separator is not an error: status tells why, with a warning on stderr and exit code 0. On a point',
+    'cloud: the same keys less boundaryExtremities, ends, approxLength and refined, plus iterations (docs/cli.md).',
   ].join('\n'),
   async run([file], values, io) {
-    const options = optionsFromFlags(values);
-    const mesh = await readMesh(file, io);
-    const vertexCount = mesh.positions.length / 3;
-    let source: number;
-    if (typeof values.source === 'string') {
-      source = /^\d+$/.test(values.source) ? Number(values.source) : NaN;
-      if (!(source < vertexCount)) throw new UsageError(`--source must be a vertex index from 0 to ${vertexCount - 1}, got '${values.source}'`);
-    } else {
-      [source] = randomSources(mesh, options.seed, 1);
-      if (source === undefined) throw new UsageError(`${file}: no vertex to draw a source from (the mesh has no faces)`);
-    }
-    const surface = await openSolver(mesh, file, io);
-    let json: SeparatorJson;
-    try {
-      json = separatorJson(surface.separator(source, options), options);
-    } finally {
-      surface.dispose();
-    }
+    const cloudOptions = cloudOptionsFromFlags(values);
+    const shape = await readShape(file, io, cloudOptions.neighbours);
+    const json = shape.kind === 'cloud'
+      ? await cloudSeparator(shape, cloudOptions, values, file, io)
+      : await meshSeparator(shape, values, file, io);
     const text = `${JSON.stringify(json)}\n`;
     if (typeof values.out === 'string') await writeFile(values.out, text);
     else io.stdout.write(text);
     if (json.status !== 'ok') {
       const reason = json.message.split('\n')[0];
-      io.stderr.write(`cscd: warning: ${file}: no separator from source ${source}: ${json.status}${reason ? ` (${reason})` : ''}\n`);
+      io.stderr.write(`cscd: warning: ${file}: no separator from source ${json.source}: ${json.status}${reason ? ` (${reason})` : ''}\n`);
     }
   },
 };
+
+/** --source (an index below `count`), else the one `drawn` with the seed. */
+function sourceOf(values: OptionValues, count: number, element: 'vertex' | 'point', drawn: () => number | undefined): number {
+  if (typeof values.source !== 'string') return drawn() ?? NaN;
+  const source = /^\d+$/.test(values.source) ? Number(values.source) : NaN;
+  if (!(source < count)) throw new UsageError(`--source must be a ${element} index from 0 to ${count - 1}, got '${values.source}'`);
+  return source;
+}
+
+async function meshSeparator(mesh: InputMesh, values: OptionValues, file: string, io: CliIo): Promise<SeparatorJson> {
+  refuseFlags(values, Object.keys(cloudFlagSpecs()), file, 'mesh');
+  const options = optionsFromFlags(values);
+  const source = sourceOf(values, mesh.positions.length / 3, 'vertex', () => randomSources(mesh, options.seed, 1)[0]);
+  if (Number.isNaN(source)) throw new UsageError(`${file}: no vertex to draw a source from (the mesh has no faces)`);
+  const surface = await openSolver(mesh, file, io);
+  try {
+    return separatorJson(surface.separator(source, options), options);
+  } finally {
+    surface.dispose();
+  }
+}
+
+async function cloudSeparator(shape: InputCloud, options: CloudOptions, values: OptionValues, file: string, io: CliIo) {
+  const count = shape.positions.length / 3;
+  // Indices are those of the cloud after its checks (as `cscd skeleton`'s vertexToNode).
+  const source = sourceOf(values, count, 'point', () => Math.floor(random(options.seed)() * count));
+  const cloud = await openCloud(shape, options, file, io);
+  try {
+    return cloudSeparatorJson(cloud.separatorStages(source, options), options);
+  } finally {
+    cloud.dispose();
+  }
+}

@@ -344,7 +344,10 @@ export interface CloudNeighbourhood {
  */
 export interface CloudSeparatorStages {
   source: number;
-  /** 'ok', 'no-cut-locus', 'no-target' or 'trace-failed' (no target with two opposite incoming gradients and a loop). */
+  /**
+   * 'ok', 'no-cut-locus', 'no-target', 'trace-failed' (no target with two opposite incoming gradients and
+   * a loop), 'degenerate-loop' (the loop shrank to nothing) or 'shorten-failed' (it did not settle).
+   */
   status: SeparatorStatus;
   message: string;
   /** Geodesic distance from the source, per point. */
@@ -369,6 +372,16 @@ export interface CloudSeparatorStages {
   /** The closed loop they form (the last point joins the first), as a polyline and as point indices. */
   approxLoop: Polyline;
   approxLoopPoints: Uint32Array;
+  /** The sphere through the approximate loop's farthest point (option sphere), or null. */
+  sphere: Sphere | null;
+  /** The loop shortened on the cloud's MLS surface (empty unless ok), its length, side areas, score, the centroid test. */
+  loop: Polyline;
+  length: number;
+  areas: [number, number];
+  score: number;
+  centroidInside: boolean;
+  /** Descent steps of the shortening. */
+  iterations: number;
   /** Milliseconds per stage. */
   timings: Record<string, number>;
 }
@@ -403,7 +416,7 @@ export interface Cloud {
   shortenLoop(polyline: Polyline, options?: { sphere?: Sphere | null; recordEvery?: number }): ShortenedCloudLoop;
   /** The graph the cut locus and loops run on (built on first use). */
   neighbourhood(): CloudNeighbourhood;
-  /** Stage 1 for one source up to the approximate loop, every step kept (tests, teaching views). */
+  /** Stage 1 for one source, every step kept (tests, teaching views, `cscd separator`). */
   separatorStages(source: number, options?: Partial<Options>): CloudSeparatorStages;
   /** Frees the WASM-side object; the Cloud must not be used afterwards. */
   dispose(): void;

@@ -120,6 +120,27 @@ describe('CSCD-PC skeletons', () => {
     }
   });
 
+  it('cscd separator on a cloud: a shortened loop on the cloud, its measures and its stages', async () => {
+    const { status, stdout } = await cscd('separator', fixture('clouds', 'bob_subsample.ply'), '--source', '5');
+    expect(status).toBe(0);
+    const result = JSON.parse(stdout);
+    expect(result.status).toBe('ok');
+    expect(result.loop.length).toBeGreaterThan(3);
+    expect(result.length).toBeGreaterThan(0);
+    const approx = result.approxLoop as [number, number, number][];
+    const approxLength = approx.reduce((sum, p, i) => sum + Math.hypot(...p.map((c, k) => c - approx[(i + 1) % approx.length][k]) as [number, number, number]), 0);
+    expect(result.length).toBeLessThan(approxLength);
+    expect(result.areas[0]).toBeGreaterThan(0);
+    expect(result.centroidInside).toBe(true);
+    // Every loop point lies on the cloud: within two mean spacings of a point.
+    const facts = JSON.parse((await cscd('info', fixture('clouds', 'bob_subsample.ply'))).stdout);
+    for (const [x, y, z] of result.loop as [number, number, number][]) {
+      let nearest = Infinity;
+      for (let p = 0; p < bob.positions.length; p += 3) nearest = Math.min(nearest, Math.hypot(bob.positions[p] - x, bob.positions[p + 1] - y, bob.positions[p + 2] - z));
+      expect(nearest).toBeLessThan(2 * facts.meanSpacing);
+    }
+  });
+
   it('refuses --decimate on a cloud and --neighbours on a mesh', async () => {
     const onCloud = await cscd('skeleton', fixture('clouds', 'bob_subsample.ply'), '--decimate', '100');
     expect(onCloud.status).not.toBe(0);

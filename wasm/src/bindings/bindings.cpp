@@ -386,7 +386,7 @@ std::optional<Sphere> toSphere(const val& sphere) {
   return Sphere{{center[0], center[1], center[2]}, sphere["radius"].as<double>()};
 }
 
-// Stage 1 of CSCD-PC for one source as far as the approximate loop; paths and loop as point indices and polylines.
+// Stage 1 of CSCD-PC for one source; paths and the approximate loop as point indices and polylines.
 val toVal(const CloudSeparatorStages& r, const CloudNeighbourhood& neighbourhood) {
   auto positionsOf = [&](const std::vector<size_t>& points) {
     std::vector<geometrycentral::Vector3> p;
@@ -416,6 +416,20 @@ val toVal(const CloudSeparatorStages& r, const CloudNeighbourhood& neighbourhood
   o.set("pathPoints", pathPoints);
   o.set("approxLoop", positionsOf(r.traced.loop));
   o.set("approxLoopPoints", toUint32Array(r.traced.loop));
+  if (r.sphere) {
+    val sphere = val::object();
+    sphere.set("center", toArray3(r.sphere->center));
+    sphere.set("radius", r.sphere->radius);
+    o.set("sphere", sphere);
+  } else {
+    o.set("sphere", val::null());
+  }
+  o.set("loop", toFloat64Array(r.loop));
+  o.set("length", r.length);
+  o.set("areas", toArray(r.areas));
+  o.set("score", r.score);
+  o.set("centroidInside", r.centroidInside);
+  o.set("iterations", r.iterations);
   o.set("timings", toVal(r.timings));
   return o;
 }
@@ -507,10 +521,9 @@ public:
   // Test-only: generalised winding numbers of the cloud's oriented points at the given xyz positions.
   val windingNumbers(const val& points) {
     return reportingErrors([&] {
-      if (!winding) winding = std::make_unique<PointWinding>(*cloud);
       const std::vector<double> xyz = convertJSArrayToNumberVector<double>(points);
       std::vector<double> numbers;
-      for (size_t i = 0; i + 2 < xyz.size(); i += 3) numbers.push_back((*winding)({xyz[i], xyz[i + 1], xyz[i + 2]}));
+      for (size_t i = 0; i + 2 < xyz.size(); i += 3) numbers.push_back(cloud->winding()({xyz[i], xyz[i + 1], xyz[i + 2]}));
       return toFloat64Array(numbers);
     });
   }
@@ -554,7 +567,6 @@ private:
 
   std::unique_ptr<Cloud> cloud;
   std::unique_ptr<geometrycentral::pointcloud::PointCloudHeatSolver> reference;
-  std::unique_ptr<PointWinding> winding;
   std::optional<Failure> failure;
 };
 

@@ -2,6 +2,7 @@
 
 #include "cscd/errors.h"
 #include "cscd/union_find.h"
+#include "pointcloud/winding.h"
 
 #include "geometrycentral/pointcloud/point_position_normal_geometry.h"
 
@@ -115,5 +116,12 @@ const CloudCutLocusSolver& Cloud::cutLocusSolver() {
   if (!cutLocus) cutLocus = std::make_unique<CloudCutLocusSolver>(neighbourhood(), *cloudGeometry->tuftedGeom, cloudFacts.meanSpacing);
   return *cutLocus;
 }
+
+const PointWinding& Cloud::winding() {
+  if (!windingNumber) windingNumber = std::make_unique<PointWinding>(*this);
+  return *windingNumber;
+}
+
+Cloud::~Cloud() = default;
 
 } // namespace cscd

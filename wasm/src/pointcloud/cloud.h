@@ -14,6 +14,8 @@
 
 namespace cscd {
 
+class PointWinding;
+
 // A point cloud as it crosses the WASM boundary: xyz per point, and nx ny nz per point or nothing.
 struct CloudArrays {
   std::vector<double> positions;
@@ -60,6 +62,10 @@ public:
   // first use (opening a cloud for its distances alone does not pay for them).
   const CloudNeighbourhood& neighbourhood();
   const CloudCutLocusSolver& cutLocusSolver();
+  // Inside or outside the cloud (pointcloud/winding.h), built on first use.
+  const PointWinding& winding();
+
+  ~Cloud();
 
 private:
   CloudFacts cloudFacts;
@@ -71,6 +77,7 @@ private:
   std::unique_ptr<MlsSurface> mlsSurface;
   std::unique_ptr<CloudNeighbourhood> neighbourGraph;
   std::unique_ptr<CloudCutLocusSolver> cutLocus;
+  std::unique_ptr<PointWinding> windingNumber;
 };
 
 } // namespace cscd

@@ -5,7 +5,6 @@
 #include "cscd/overlap.h"
 #include "evaluate/tube_radii.h"
 #include "pointcloud/separator.h"
-#include "pointcloud/shorten.h"
 
 #include <algorithm>
 #include <set>
@@ -29,36 +28,19 @@ Samples pointSamplesOf(Cloud& cloud) {
 
 PointCloudRealization::PointCloudRealization(Cloud& cloud_, const Options& options_)
     : cloud(cloud_), options(options_), pointSamples(pointSamplesOf(cloud_)),
-      sampler(pointSamples.positions, pointSamples.weights, cloud_.facts().bboxDiagonal, options_.seed),
-      winding(cloud_) {}
+      sampler(pointSamples.positions, pointSamples.weights, cloud_.facts().bboxDiagonal, options_.seed) {}
 
 PointCloudRealization::Candidate PointCloudRealization::separator(size_t source) {
   Candidate candidate;
   candidate.source = source;
   CloudSeparatorStages stages = computeCloudSeparatorStages(cloud, source, options);
   if (stages.status == SeparatorStatus::Ok) {
-    const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();
-    std::vector<Vector3> approximate;
-    for (size_t p : stages.traced.loop) approximate.push_back(neighbourhood.position(p));
-    // The sphere reaches exactly the farthest point of the approximate loop (paper Sec. 4.1.6).
-    std::optional<Sphere> sphere;
-    if (options.sphere) {
-      const Vector3 centre = neighbourhood.position(source);
-      double radius = 0;
-      for (const Vector3& p : approximate) radius = std::max(radius, norm(p - centre));
-      sphere = Sphere{centre, radius};
-    }
-    if (approximate.size() >= 3) {
-      ShortenedCloudLoop shortened = shortenLoop(cloud, approximate, sphere);
-      if (shortened.failureKind == ShortenedCloudLoop::Failure::None) {
-        candidate.found = true;
-        candidate.loop = std::move(shortened.loop);
-        candidate.length = shortened.length;
-        candidate.score = separatorScore(shortened.areas, shortened.length);
-        candidate.centroidInside = inside(loopCentroid(candidate.loop, true));
-        for (const Vector3& p : candidate.loop) candidate.points.push_back(cloud.mls().nearestPoint(p));
-      }
-    }
+    candidate.found = true;
+    candidate.loop = std::move(stages.loop);
+    candidate.length = stages.length;
+    candidate.score = stages.score;
+    candidate.centroidInside = stages.centroidInside;
+    for (const Vector3& p : candidate.loop) candidate.points.push_back(cloud.mls().nearestPoint(p));
   }
   std::vector<size_t> covered = candidate.points;
   covered.push_back(source);

@@ -37,7 +37,7 @@ public:
   void centre(SkeletonGraph& graph, const Selection<Candidate>& packed) const;
   // The points, their areas and the neighbourhood graph's edges.
   const Samples& samples() const { return pointSamples; }
-  bool inside(const geometrycentral::Vector3& p) const { return winding(p) > 0.5; }
+  bool inside(const geometrycentral::Vector3& p) const { return cloud.winding()(p) > 0.5; }
   void fitRadii(SkeletonGraph& graph) const;
 
 private:
@@ -45,7 +45,6 @@ private:
   Options options;
   Samples pointSamples;
   SourceSampler sampler;
-  PointWinding winding;
 };
 
 using PointCloudPipeline = Pipeline<PointCloudRealization>;

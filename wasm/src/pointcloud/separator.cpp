@@ -1,8 +1,13 @@
 #include "pointcloud/separator.h"
 
+#include "cscd/measures.h"
 #include "cscd/stage_clock.h"
+#include "pointcloud/shorten.h"
 #include "pointcloud/target.h"
 #include "pointcloud/trace.h"
+#include "pointcloud/winding.h"
+
+#include <algorithm>
 
 namespace cscd {
 namespace {
@@ -18,7 +23,7 @@ CloudSeparatorStages& fail(CloudSeparatorStages& result, SeparatorStatus status,
 
 } // namespace
 
-CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options) {
+CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options, bool shorten) {
   CloudSeparatorStages result;
   result.source = source;
   StageClock clock(result.timings);
@@ -60,8 +65,41 @@ CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, co
     result.message.clear();
     break;
   }
+  if (!result.target) {
+    clock.lap("loop");
+    return fail(result, SeparatorStatus::TraceFailed, result.message);
+  }
+  if (!shorten) {
+    clock.lap("loop");
+    return result;
+  }
+
+  std::vector<geometrycentral::Vector3> approximate;
+  for (size_t p : result.traced.loop) approximate.push_back(neighbourhood.position(p));
+  if (options.sphere) {
+    const geometrycentral::Vector3 centre = neighbourhood.position(source);
+    double radius = 0;
+    for (const geometrycentral::Vector3& p : approximate) radius = std::max(radius, norm(p - centre));
+    result.sphere = Sphere{centre, radius};
+  }
+  if (approximate.size() < 3) {
+    clock.lap("loop");
+    return fail(result, SeparatorStatus::DegenerateLoop, "the approximate loop has fewer than 3 points");
+  }
+  ShortenedCloudLoop shortened = shortenLoop(cloud, approximate, result.sphere);
   clock.lap("loop");
-  if (!result.target) return fail(result, SeparatorStatus::TraceFailed, result.message);
+  result.iterations = shortened.iterations;
+  if (shortened.failureKind == ShortenedCloudLoop::Failure::Degenerate)
+    return fail(result, SeparatorStatus::DegenerateLoop, shortened.failure);
+  if (shortened.failureKind == ShortenedCloudLoop::Failure::NotConverged)
+    return fail(result, SeparatorStatus::ShortenFailed, shortened.failure);
+
+  result.loop = std::move(shortened.loop);
+  result.length = shortened.length;
+  result.areas = shortened.areas;
+  result.score = separatorScore(result.areas, result.length);
+  result.centroidInside = cloud.winding()(loopCentroid(result.loop, true)) > 0.5;
+  clock.lap("measures");
   return result;
 }
 

@@ -3,9 +3,11 @@
 #include "cscd/descent.h"
 #include "cscd/options.h"
 #include "cscd/separator_status.h"
+#include "cscd/sphere.h"
 #include "pointcloud/cloud.h"
 #include "pointcloud/cut_locus.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -13,9 +15,9 @@
 
 namespace cscd {
 
-// Stage 1 of CSCD-PC for one source as far as the approximate loop (paper Sec. 4.1.2-4.1.4 for clouds),
-// with every intermediate result kept for tests and teaching views: distance -> cut locus -> targets ->
-// two descending paths -> approximate loop. Its shortening and measures are not here yet.
+// Stage 1 of CSCD-PC for one source (paper Sec. 4.1 for clouds), with every intermediate result kept
+// for tests and teaching views: distance -> cut locus -> targets -> two descending paths -> approximate
+// loop -> the loop shortened on the MLS surface inside the sphere (pointcloud/shorten.h) -> measures.
 struct CloudSeparatorStages {
   size_t source = 0;
   SeparatorStatus status = SeparatorStatus::Ok;
@@ -27,9 +29,19 @@ struct CloudSeparatorStages {
   std::optional<size_t> target; // the one the loop runs through
   int attempts = 0;             // targets traced: the nearest first, the next when its descents made no loop
   TracedLoop traced;            // its paths and loop are point indices
+
+  // The sphere through the approximate loop's farthest point (paper Sec. 4.1.6), when options.sphere.
+  std::optional<Sphere> sphere;
+  std::vector<geometrycentral::Vector3> loop; // shortened, on the MLS surface; empty unless Ok
+  double length = 0;
+  std::array<double, 2> areas{0, 0};
+  double score = 0;
+  bool centroidInside = false;
+  int iterations = 0; // of the shortening
   std::vector<std::pair<std::string, double>> timings; // milliseconds per stage, in order
 };
 
-CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options);
+// `shorten` false: stop at the approximate loop (the cut-locus views and tests need no more).
+CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options, bool shorten = true);
 
 } // namespace cscd

@@ -142,8 +142,8 @@ function toPoints(polyline: Polyline): Point[] {
   return points;
 }
 
-/** The core's result as plain JSON data (typed arrays become arrays, polylines lists of points). */
-export function separatorJson(result: Separator, options: Options): SeparatorJson {
+/** The fields a mesh's and a cloud's separator share, up to the cut locus, as plain JSON data. */
+function stagesJson(result: Pick<Separator, 'source' | 'status' | 'message' | 'distance' | 'cutLocus'>) {
   const edges: [number, number][] = [];
   for (let i = 0; i + 1 < result.cutLocus.edges.length; i += 2) edges.push([result.cutLocus.edges[i], result.cutLocus.edges[i + 1]]);
   return {
@@ -158,6 +158,13 @@ export function separatorJson(result: Separator, options: Options): SeparatorJso
       root: result.cutLocus.root,
       cycleRank: result.cutLocus.cycleRank,
     },
+  };
+}
+
+/** The core's result as plain JSON data (typed arrays become arrays, polylines lists of points). */
+export function separatorJson(result: Separator, options: Options): SeparatorJson {
+  return {
+    ...stagesJson(result),
     boundaryExtremities: toPoints(result.boundaryExtremities.points),
     target: result.targetPoint ? [...result.targetPoint] : null,
     ends: result.endPoints ? (toPoints(result.endPoints) as [Point, Point]) : null,
@@ -179,20 +186,8 @@ export function separatorJson(result: Separator, options: Options): SeparatorJso
 
 /** The JSON of `cscd separator` on a point cloud: the stages by point index and position. */
 export function cloudSeparatorJson(result: CloudSeparatorStages, options: CloudOptions) {
-  const edges: [number, number][] = [];
-  for (let i = 0; i + 1 < result.cutLocus.edges.length; i += 2) edges.push([result.cutLocus.edges[i], result.cutLocus.edges[i + 1]]);
   return {
-    source: result.source,
-    status: result.status,
-    message: result.message,
-    distance: Array.from(result.distance),
-    cutLocus: {
-      points: toPoints(result.cutLocus.points),
-      edges,
-      vertices: Array.from(result.cutLocus.vertices),
-      root: result.cutLocus.root,
-      cycleRank: result.cutLocus.cycleRank,
-    },
+    ...stagesJson(result),
     target: result.targetPoint ? [...result.targetPoint] : null,
     closed: true,
     paths: [toPoints(result.paths[0]), toPoints(result.paths[1])],

@@ -96,6 +96,15 @@ val toUint32Array(const std::vector<size_t>& indices) {
   return toTypedArray("Uint32Array", std::vector<uint32_t>(indices.begin(), indices.end()));
 }
 
+// The sphere constraint as {center, radius}, or null.
+val toVal(const std::optional<Sphere>& sphere) {
+  if (!sphere) return val::null();
+  val o = val::object();
+  o.set("center", toArray3(sphere->center));
+  o.set("radius", sphere->radius);
+  return o;
+}
+
 val toVal(const SeparatorResult& r, Surface& surface) {
   val o = val::object();
   o.set("source", r.source);
@@ -128,14 +137,7 @@ val toVal(const SeparatorResult& r, Surface& surface) {
   o.set("paths", paths);
   o.set("approxLoop", toFloat64Array(r.approxLoop));
   o.set("loop", toFloat64Array(r.loop));
-  if (r.sphere) {
-    val sphere = val::object();
-    sphere.set("center", toArray3(r.sphere->center));
-    sphere.set("radius", r.sphere->radius);
-    o.set("sphere", sphere);
-  } else {
-    o.set("sphere", val::null());
-  }
+  o.set("sphere", toVal(r.sphere));
   o.set("approxLength", r.approxLength);
   o.set("length", r.length);
   o.set("areas", toArray(r.areas));
@@ -416,14 +418,7 @@ val toVal(const CloudSeparatorStages& r, const CloudNeighbourhood& neighbourhood
   o.set("pathPoints", pathPoints);
   o.set("approxLoop", positionsOf(r.traced.loop));
   o.set("approxLoopPoints", toUint32Array(r.traced.loop));
-  if (r.sphere) {
-    val sphere = val::object();
-    sphere.set("center", toArray3(r.sphere->center));
-    sphere.set("radius", r.sphere->radius);
-    o.set("sphere", sphere);
-  } else {
-    o.set("sphere", val::null());
-  }
+  o.set("sphere", toVal(r.sphere));
   o.set("loop", toFloat64Array(r.loop));
   o.set("length", r.length);
   o.set("areas", toArray(r.areas));

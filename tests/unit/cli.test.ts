@@ -27,7 +27,7 @@ describe('cscd', () => {
     expect(result.status).toBe(0);
     expect(result.stdout).toMatch(/info <mesh\|cloud>/);
     expect(result.stdout).toMatch(/distance <mesh\|cloud> \[options\]/);
-    expect(result.stdout).toMatch(/separator <mesh> \[options\]/);
+    expect(result.stdout).toMatch(/separator <mesh\|cloud> \[options\]/);
     expect((await cscd('help', 'distance')).stdout).toMatch(/--source V\s+source vertex index/);
   });
 

@@ -6,7 +6,7 @@
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { fixture } from '../paths.ts';
-import { body, enterStage, figure, layerBox, openPage, waitForState } from './studio.ts';
+import { body, downloadSkeletonJson, enterStage, figure, layerBox, openPage, waitForState } from './studio.ts';
 
 /** Drops a file on the window as a user's drag and drop does. */
 async function drop(page: Page, name: string, bytes: Buffer): Promise<void> {
@@ -48,6 +48,10 @@ test('a dropped point cloud runs to a skeleton with its cycle, on one worker', a
   await expect(page.getByTestId('sk-status')).toContainText('geometry worker alone');
   const run = await page.evaluate(() => window.cscd!.skeletonRun());
   expect(run?.workers).toBe(1);
+  // The file saved is the CLI's, with a node per point.
+  const json = await downloadSkeletonJson(page);
+  expect(json.vertexToNode).toHaveLength(1948);
+  expect(json.stats.cycles).toBe(1);
 
   // A click on a point selects its node, whose region is its points.
   await enterStage(page, 'regions');

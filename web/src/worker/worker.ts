@@ -198,6 +198,7 @@ async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: num
   const { id, fileName, neighbours } = request;
   const { cloud: checked, repairs } = checkCloud(parsed, neighbours);
   const points = checked.positions.length / 3;
+  if (points > POINT_LIMIT) progress(id, 'parse', `subsampling ${points} points to ${SUBSAMPLE_TARGET}…`); // seconds at a million
   const cloud = points > POINT_LIMIT ? subsampleCloud(checked, SUBSAMPLE_TARGET, defaultOptions.seed) : checked;
   if (cloud !== checked) {
     repairs.push(`subsampled from ${points} to ${cloud.positions.length / 3} points (Poisson-disk, seed ${defaultOptions.seed}): above ${POINT_LIMIT} points the skeleton takes too long`);

@@ -19,6 +19,7 @@ const SUBSET = [
   'bow_tie.obj',
   'fin_edge.obj',
   'inside_out.obj',
+  'point_cloud.ply',
 ];
 /** What a refused or repaired file may take to show its outcome: a bound, not a wait. */
 const BOUND_MS = 20_000;

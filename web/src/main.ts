@@ -8,7 +8,7 @@
  * and `dataset.separatorRuns` counts the stage-1 replies shown, for tests.
  */
 import './style.css';
-import { MESH_EXTENSIONS } from '../../lib/io/index.ts';
+import { SHAPE_EXTENSIONS } from '../../lib/io/index.ts';
 import { SingleSource } from './single-source.ts';
 import { STAGES, SOURCE_STAGES, stageDef, stageIndex, type StageKey } from './stage-defs.ts';
 import type { StudioContext } from './studio-context.ts';
@@ -22,12 +22,12 @@ import { separatorCaption, separatorStageTimes } from './ui/separator-panel.ts';
 import { SkeletonPanel } from './ui/skeleton-panel.ts';
 import { Timeline, type PillState } from './ui/timeline.ts';
 import { readUrl, writeUrl } from './ui/url-state.ts';
-import { SurfaceLayer } from './viewer/layers.ts';
+import { PointsLayer, SurfaceLayer, type ShapeLayer } from './viewer/layers.ts';
 import { Viewer } from './viewer/viewer.ts';
 import { WholeShape } from './whole-shape.ts';
 import { GeometryClient, WorkerError } from './worker/client.ts';
 import type { Refinement } from '../../lib/core/types.ts';
-import type { DecimatedReply, OpenedReply, SkeletonReply, WriteRequest } from './worker/protocol.ts';
+import type { CloudOpenedReply, DecimatedReply, OpenedReply, SkeletonReply, WriteRequest } from './worker/protocol.ts';
 
 const initial = readUrl();
 const panel = new Panel();
@@ -50,10 +50,12 @@ let opening = 0;
 let computing = 0;
 let failed = false;
 /**
- * The open mesh: its file name, the sample it is (null: a file of the user's), why it cannot be
- * computed on, its notes (parser warnings, repairs), its faces and the count it was decimated from (or null).
+ * The open mesh or point cloud: its file name, the sample it is (null: a file of the user's), why it
+ * cannot be computed on, its notes (parser warnings, repairs), its faces and the count it was
+ * decimated from (or null); for a cloud, how to open it again (with other neighbours).
  */
 let mesh: {
+  cloud: { reopen: () => Promise<boolean> } | null;
   fileName: string;
   sample: string | null;
   surfaceError: string | null;
@@ -145,7 +147,7 @@ const whole = new WholeShape(ctx);
 
 // -- opening meshes ------------------------------------------------------------------------------
 
-async function openBytes(fileName: string, bytes: ArrayBuffer, sample: string | null): Promise<boolean> {
+async function openBytes(fileName: string, bytes: ArrayBuffer, sample: string | null, reopen: () => Promise<boolean>): Promise<boolean> {
   if (whole.running) whole.invalidate(); // it would hold up the open; a finished result stays if the file is refused
   opening++;
   failed = false;
@@ -153,7 +155,9 @@ async function openBytes(fileName: string, bytes: ArrayBuffer, sample: string | 
   panel.setStatus(`opening ${fileName}…`, true);
   updateState();
   try {
-    showMesh(await client.open(fileName, bytes), sample);
+    const reply = await client.open(fileName, bytes, params.neighbours);
+    if (reply.shape === 'cloud') showCloud(reply, reopen);
+    else showMesh(reply, sample);
     return true;
   } catch (error) {
     // A crash is reported by onCrash; the previous mesh stays either way.
@@ -166,24 +170,48 @@ async function openBytes(fileName: string, bytes: ArrayBuffer, sample: string | 
   }
 }
 
+/** The parser's warnings and the repairs (or a cloud's checks) on load, for the notes. */
+const fileNotes = (reply: OpenedReply | CloudOpenedReply) => [...reply.warnings, ...reply.repairs.map((repair) => `Repaired: ${repair}`)];
+
 function showMesh(reply: OpenedReply, sample: string | null): void {
   const t = reply.timings;
-  const notes = [...reply.warnings, ...reply.repairs.map((repair) => `Repaired: ${repair}`)];
+  const notes = fileNotes(reply);
   const { degenerateFaces, unreferencedVertices, faces } = reply.facts;
   if (degenerateFaces) notes.push(`${degenerateFaces} degenerate face${degenerateFaces > 1 ? 's' : ''} (repeated vertex or zero area)`);
   if (unreferencedVertices) notes.push(`${unreferencedVertices} ${unreferencedVertices > 1 ? 'vertices' : 'vertex'} used by no face`);
   if (reply.surfaceError) notes.push(`Geodesic distance is unavailable: ${reply.surfaceError}`);
   if (reply.refined) notes.push(refinedNote(reply.refined));
-  mesh = { fileName: reply.fileName, sample, surfaceError: reply.surfaceError, openMs: t.parseMs + t.inspectMs, notes, faces, decimatedFrom: null };
-  showSurface(reply.positions, reply.triangles);
+  mesh = { cloud: null, fileName: reply.fileName, sample, surfaceError: reply.surfaceError, openMs: t.parseMs + t.inspectMs, notes, faces, decimatedFrom: null };
+  showOpened(reply, new SurfaceLayer(reply.positions, reply.triangles), sample, notes);
+  panel.setFacts(reply.facts);
+  offer.show(faces, reply.facts.vertices);
+}
+
+/** What a cloud is not computed on yet, in its notes. */
+const CLOUD_NOTE = 'Point cloud: the whole-shape stages run on it (stage 1 on one worker); stage 1 from one source, the reconstruction error and decimation are for meshes only for now';
+
+function showCloud(reply: CloudOpenedReply, reopen: () => Promise<boolean>): void {
+  const t = reply.timings;
+  const notes = [...fileNotes(reply), CLOUD_NOTE];
+  mesh = { cloud: { reopen }, fileName: reply.fileName, sample: null, surfaceError: null, openMs: t.parseMs + t.inspectMs, notes, faces: 0, decimatedFrom: null };
+  showOpened(reply, new PointsLayer(reply.positions, viewer.restPixelRatio), null, notes);
+  panel.setCloudFacts(reply.facts);
+  offer.hide();
+}
+
+/** What a mesh and a cloud just opened share in the view and the panel. */
+function showOpened(reply: OpenedReply | CloudOpenedReply, layer: ShapeLayer, sample: string | null, notes: string[]): void {
+  const cloud = reply.shape === 'cloud';
+  showShape(layer);
+  params.showCloudOptions(cloud);
+  // Flat shading and isolines draw a mesh's faces.
+  for (const box of [flatBox, isolinesBox]) box.closest('label')!.hidden = cloud;
   viewer.frame();
   markSample(gallery, sample);
   panel.setFile(reply.fileName, reply.format);
-  panel.setFacts(reply.facts);
   panel.setNotes(notes);
   // The solver is opened by the first computation, which fills in its time.
   panel.setTimings({ ...reply.timings, prepareMs: null });
-  offer.show(faces, reply.facts.vertices);
   delete document.body.dataset.decimatedFrom;
 }
 
@@ -200,21 +228,21 @@ function showDecimated(reply: DecimatedReply): void {
   const notes = [...mesh.notes, `Decimated from ${reply.decimatedFrom} to ${faces} faces (quadric edge collapse; genus, components and holes kept)`];
   if (reply.refined) notes.push(refinedNote(reply.refined));
   mesh = { ...mesh, faces, decimatedFrom: reply.decimatedFrom, notes };
-  showSurface(reply.positions, reply.triangles);
+  showShape(new SurfaceLayer(reply.positions, reply.triangles));
   panel.setFacts(reply.facts);
   panel.setNotes(mesh.notes);
   panel.setTimings({ prepareMs: null });
   document.body.dataset.decimatedFrom = String(reply.decimatedFrom);
 }
 
-/** A new surface in the view: every stage's result and layer is dropped. */
-function showSurface(positions: Float32Array, triangles: Uint32Array): void {
+/** A new shape in the view: every stage's result and layer is dropped. */
+function showShape(layer: ShapeLayer): void {
   wanted = 'mesh';
   userHidden.clear();
   viewer.clearLayers();
   single.reset();
   whole.reset();
-  viewer.setLayer('surface', new SurfaceLayer(positions, triangles));
+  viewer.setLayer('surface', layer);
   viewer.surface!.setFlatShading(flatBox.checked);
   viewer.surface!.setIsolines(isolinesBox.checked);
 }
@@ -258,14 +286,14 @@ async function openFile(file: File): Promise<void> {
     updateState();
     return;
   }
-  await openBytes(file.name, bytes, null);
+  await openBytes(file.name, bytes, null, () => openFile(file).then(() => true));
 }
 
 async function openSample(sample: Sample): Promise<boolean> {
   try {
     const response = await fetch(`samples/${sample.file}`);
     if (!response.ok) throw new Error(`HTTP ${response.status} for samples/${sample.file}`);
-    return await openBytes(sample.file, await response.arrayBuffer(), sample.name);
+    return await openBytes(sample.file, await response.arrayBuffer(), sample.name, () => openSample(sample));
   } catch (error) {
     fail(`Could not load the sample mesh ${sample.file}`, error);
     updateState();
@@ -276,6 +304,9 @@ async function openSample(sample: Sample): Promise<boolean> {
 // -- stages ----------------------------------------------------------------------------------------
 
 const canCompute = () => !!viewer.surface && !mesh?.surfaceError && !offer.pending;
+
+/** Stages with nothing to show on a point cloud yet: stage 1 from one source and the reconstruction error. */
+const meshOnly = (key: StageKey) => !!mesh?.cloud && (stageDef(key).group === 'source' || key === 'reconstruction');
 
 /** The stage shown: the one wanted, or the last one the stage-1 run reached when it stopped earlier. */
 function shownStage(): StageKey {
@@ -289,7 +320,7 @@ function pillStates(): Map<StageKey, PillState> {
     let state: PillState;
     if (!viewer.surface) state = 'disabled';
     else if (group === 'mesh') state = 'ready';
-    else if (!canCompute()) state = 'disabled';
+    else if (!canCompute() || meshOnly(key)) state = 'disabled';
     else if (group === 'source') state = single.has(key) ? 'ready' : single.reply ? 'disabled' : single.busy ? 'running' : 'pending';
     else if (key === 'reconstruction') state = whole.evaluation ? 'ready' : whole.result ? 'pending' : whole.running ? 'disabled' : 'pending';
     else state = whole.result ? 'ready' : whole.running ? (key === 'separators' ? 'running' : 'pending') : 'pending';
@@ -430,13 +461,13 @@ viewer.onClick = (x, y) => {
     return;
   }
   const pick = viewer.pick(x, y);
-  if (!pick || !canCompute()) return;
+  if (!pick || !canCompute() || mesh?.cloud) return;
   if (key === 'mesh') wanted = 'geodesics';
   void single.run(pick.vertex);
 };
 
 byTestId('random-source').addEventListener('click', () => {
-  if (!canCompute()) return;
+  if (!canCompute() || mesh?.cloud) return;
   if (stageDef(shownStage()).group !== 'source') wanted = 'geodesics';
   void single.runRandom();
 });
@@ -451,6 +482,8 @@ params.onChange = (keys) => {
   if (had && stageDef(shownStage()).group === 'shape') enter(shownStage());
   refresh();
 };
+// The cloud's neighbourhoods are made when it is opened: a change opens it again, every result dropped.
+params.onNeighboursChange = () => void mesh?.cloud?.reopen();
 // A run setting changes how the next run is computed, not its result: the skeleton shown stays.
 params.onSettingsChange = () => refresh();
 
@@ -498,12 +531,12 @@ isolinesBox.addEventListener('change', () => {
 document.querySelector('#reset-view')!.addEventListener('click', () => viewer.frame());
 viewer.onLayersChange = () => updateLayerList(stageDef(shownStage()).layers, stageDef(shownStage()).dimmed ?? []);
 
-document.querySelector('#formats-hint')!.textContent = `or drop ${MESH_EXTENSIONS.join(' ')} anywhere`;
+document.querySelector('#formats-hint')!.textContent = `or drop ${SHAPE_EXTENSIONS.join(' ')} anywhere`;
 installFileSources({
   button: document.querySelector<HTMLButtonElement>('#open-button')!,
   input: document.querySelector<HTMLInputElement>('#file-input')!,
   overlay: document.querySelector<HTMLElement>('#drop-overlay')!,
-  extensions: MESH_EXTENSIONS,
+  extensions: SHAPE_EXTENSIONS,
   onFile: (file) => void openFile(file),
 });
 installGallery(gallery, (sample) => void openSample(sample));

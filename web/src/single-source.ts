@@ -7,7 +7,7 @@ import { SOURCE_STAGES, type StageKey } from './stage-defs.ts';
 import { changedOptions, type StudioContext } from './studio-context.ts';
 import { reachedStage, showSeparatorFigures } from './ui/separator-panel.ts';
 import { niceSpacing } from './viewer/colormap.ts';
-import { SpheresLayer } from './viewer/layers.ts';
+import { SpheresLayer, SurfaceLayer } from './viewer/layers.ts';
 import { separatorLayers } from './viewer/separator-layers.ts';
 import { WorkerError } from './worker/client.ts';
 import type { SeparatorReply } from './worker/protocol.ts';
@@ -58,7 +58,8 @@ export class SingleSource {
   async run(source: number): Promise<void> {
     const { viewer, client } = this.ctx;
     const surface = viewer.surface;
-    if (!surface || source < 0 || source >= surface.vertexCount) return;
+    // Stage 1 from one source is shown on meshes only (the page never asks it of a cloud).
+    if (!(surface instanceof SurfaceLayer) || source < 0 || source >= surface.vertexCount) return;
     const generation = this.generation;
     const request = ++this.latest;
     const current = () => generation === this.generation && request === this.latest;
@@ -111,7 +112,7 @@ export class SingleSource {
 
   private show(reply: SeparatorReply): void {
     const { viewer, layerColors } = this.ctx;
-    const surface = viewer.surface!;
+    const surface = viewer.surface as SurfaceLayer;
     const s = reply.separator;
     const spacing = niceSpacing(reply.distanceMax);
     surface.setScalarField({ values: s.distance, max: reply.distanceMax, isolineSpacing: spacing });

@@ -25,6 +25,7 @@ import {
   regionVertexColors,
   skeletonLayers,
 } from './viewer/skeleton-layers.ts';
+import { SurfaceLayer } from './viewer/layers.ts';
 import { GlassSphereLayer } from './viewer/tubes.ts';
 import { WorkerError, type SkeletonJob } from './worker/client.ts';
 import type { EvaluationReply, PipelineNews, PoolReport, SkeletonReply } from './worker/protocol.ts';
@@ -354,7 +355,8 @@ export class WholeShape {
     const r = nodeRadii(s, surface.boundingSphere.radius)[n] * 1.9;
     this.ctx.layerColors.set('sk-highlight', COLORS.highlight);
     viewer.setLayer('sk-highlight', new GlassSphereLayer('Selected node', s.nodes.subarray(3 * n, 3 * n + 3), r, COLORS.highlight));
-    if (owned > 0) {
+    // A cloud's region is its points, coloured above: there are no triangles to draw solid.
+    if (owned > 0 && surface instanceof SurfaceLayer) {
       const triangles = regionTriangles(surface.geometry.getIndex()!.array, s.vertexToNode, n);
       this.ctx.layerColors.set('sk-region', regionColor(n));
       viewer.setLayer('sk-region', new RegionLayer('Selected region', surface.geometry, triangles, regionColor(n)));

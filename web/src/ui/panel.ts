@@ -1,5 +1,5 @@
 /** The side panel: file, status, error box, mesh facts, notes, timings, layer list (stage 1: ui/stages.ts). */
-import type { MeshFacts } from '../../../lib/core/types.ts';
+import type { CloudFacts, MeshFacts } from '../../../lib/core/types.ts';
 import { colormapGradient } from '../viewer/colormap.ts';
 
 function $<T extends HTMLElement = HTMLElement>(selector: string): T {
@@ -109,6 +109,20 @@ export class Panel {
     set('facts-oriented', f.consistentlyOriented ? 'yes' : 'no', !f.consistentlyOriented);
     set('facts-bbox-diagonal', formatLength(f.bboxDiagonal));
     set('facts-mean-edge', formatLength(f.meanEdgeLength));
+  }
+
+  /** A point cloud's facts in the same list: points for vertices, the mean spacing for the mean edge, no faces. */
+  setCloudFacts(f: CloudFacts): void {
+    const set = (id: string, text: string | number) => {
+      const el = byTestId(id);
+      el.textContent = String(text);
+      el.classList.remove('warn');
+    };
+    set('facts-vertices', `${f.points} points`);
+    for (const id of ['facts-faces', 'facts-edges', 'facts-boundary-loops', 'facts-genus', 'facts-euler', 'facts-manifold', 'facts-oriented']) set(id, '–');
+    set('facts-components', f.components);
+    set('facts-bbox-diagonal', formatLength(f.bboxDiagonal));
+    set('facts-mean-edge', `${formatLength(f.meanSpacing)} (spacing, ${f.neighbours} neighbours)`);
   }
 
   /** Parser warnings plus the page's own notes about the mesh. */

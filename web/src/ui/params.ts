@@ -3,10 +3,11 @@
  * messages and the CLI), each with a tooltip saying what it changes and in which unit, plus presets;
  * and the run settings (`workers`) in a folder of their own, which change how a run is computed,
  * not its result. The panel owns the current options and settings; `onChange` says which options
- * the user changed, `onSettingsChange` that a setting changed.
+ * the user changed, `onSettingsChange` that a setting changed. The point-cloud options (`shapes:
+ * 'cloud'`, i.e. `neighbours`) have a folder of their own, shown only while a cloud is open.
  */
 import GUI, { type Controller } from 'lil-gui';
-import { AUTO_N_RULE, defaultOptions, MESH_OPTIONS, optionRanges, WORKERS, type MeshOptionSpec, type RunSettings } from '../../../lib/core/options.ts';
+import { AUTO_N_RULE, defaultCloudOptions, defaultOptions, MESH_OPTIONS, OPTIONS, optionRanges, WORKERS, type MeshOptionSpec, type RunSettings } from '../../../lib/core/options.ts';
 import type { Options } from '../../../lib/core/types.ts';
 
 export type OptionKey = keyof Options;
@@ -37,7 +38,11 @@ interface Model extends Omit<Options, 'n'> {
   workersAuto: boolean;
   workers: number;
   preset: string;
+  neighbours: number;
 }
+
+/** The one cloud-only option: how many neighbours each point's local triangulation is built from. */
+const NEIGHBOURS = OPTIONS.find((o) => o.shapes === 'cloud' && o.key === 'neighbours')!;
 
 const FALLBACK_N = 40;
 const FALLBACK_WORKERS = 2;
@@ -48,14 +53,17 @@ export class ParamsPanel {
   onChange: ((changed: OptionKey[]) => void) | null = null;
   /** The user changed a run setting. */
   onSettingsChange: (() => void) | null = null;
+  /** The user changed `neighbours` (the open cloud is opened again with it). */
+  onNeighboursChange: (() => void) | null = null;
 
   private readonly gui: GUI;
   private readonly model: Model;
   private readonly nController: Controller;
   private readonly workersController: Controller;
+  private readonly cloudFolder: GUI;
 
   constructor(container: HTMLElement, initial: Options, settings: RunSettings) {
-    this.model = { ...toModel(initial), ...settingsModel(settings), preset: presetOf(initial) };
+    this.model = { ...toModel(initial), ...settingsModel(settings), preset: presetOf(initial), neighbours: defaultCloudOptions.neighbours };
     const gui = new GUI({ container, title: 'Parameters', width: 284 });
     this.gui = gui;
     const m = this.model;
@@ -94,6 +102,14 @@ export class ParamsPanel {
       }
     }
     this.nController = nController!;
+    this.cloudFolder = gui.addFolder('Point cloud');
+    const neighboursTip = `${NEIGHBOURS.help.charAt(0).toUpperCase()}${NEIGHBOURS.help.slice(1)}. Opens the cloud again.`;
+    tag(this.cloudFolder.add(this.model, 'neighbours').min(NEIGHBOURS.range[0]).step(1), 'neighbours', neighboursTip).onFinishChange(() => {
+      this.model.neighbours = this.neighbours; // shown clamped, as it is used
+      this.cloudFolder.controllersRecursive().forEach((c) => c.updateDisplay());
+      this.onNeighboursChange?.();
+    });
+    this.cloudFolder.hide();
     const run = gui.addFolder('Run · how, not what');
     const workersTip = `${WORKERS.help.charAt(0).toUpperCase()}${WORKERS.help.slice(1)}.`;
     this.workersController = addCount(run, m, 'workers', 'workersAuto', WORKERS.range, [WORKERS_AUTO_HELP, workersTip], () => {
@@ -108,6 +124,16 @@ export class ParamsPanel {
   get settings(): RunSettings {
     const { workersAuto, workers } = this.model;
     return { workers: workersAuto ? 'auto' : clamp(workers, WORKERS.range, true) };
+  }
+
+  /** Neighbours per point for a cloud, clamped to its accepted range. */
+  get neighbours(): number {
+    return clamp(this.model.neighbours, NEIGHBOURS.range as readonly [number, number], true);
+  }
+
+  /** Shows the point-cloud options while a cloud is open, hides them for a mesh. */
+  showCloudOptions(on: boolean): void {
+    this.cloudFolder.show(on);
   }
 
   /** The current options, clamped to their accepted ranges. */
@@ -179,7 +205,7 @@ function settingsModel(settings: RunSettings): Pick<Model, 'workersAuto' | 'work
   return { workersAuto: auto, workers: auto ? FALLBACK_WORKERS : (settings.workers as number) };
 }
 
-function toModel(options: Options): Omit<Model, 'preset' | 'workersAuto' | 'workers'> {
+function toModel(options: Options): Omit<Model, 'preset' | 'workersAuto' | 'workers' | 'neighbours'> {
   const auto = options.n === 'auto';
   return { ...options, nAuto: auto, n: auto ? FALLBACK_N : (options.n as number) };
 }

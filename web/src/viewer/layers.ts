@@ -34,14 +34,30 @@ export interface ScalarField {
   isolineSpacing: number;
 }
 
+/** What a mesh's surface and a cloud's points share: positions in one geometry, and its bounds. */
+abstract class PositionsLayer {
+  readonly geometry = new THREE.BufferGeometry();
+
+  get vertexCount(): number {
+    return this.geometry.getAttribute('position').count;
+  }
+
+  get boundingSphere(): THREE.Sphere {
+    return this.geometry.boundingSphere!;
+  }
+
+  vertexPosition(index: number, target = new THREE.Vector3()): THREE.Vector3 {
+    return target.fromBufferAttribute(this.geometry.getAttribute('position') as THREE.BufferAttribute, index);
+  }
+}
+
 /**
  * The triangle mesh, lit with a matte MeshStandardMaterial, optionally coloured by a per-vertex
  * scalar field through a colormap with anti-aliased isolines (patched into the standard shader).
  */
-export class SurfaceLayer implements Layer {
+export class SurfaceLayer extends PositionsLayer implements Layer {
   readonly label = 'Surface';
   readonly object: THREE.Mesh<THREE.BufferGeometry, THREE.MeshStandardMaterial>;
-  readonly geometry = new THREE.BufferGeometry();
   private readonly uniforms = {
     scalarLut: { value: colormapTexture() },
     scalarMax: { value: 0 },
@@ -63,6 +79,7 @@ export class SurfaceLayer implements Layer {
   private field: ScalarField | null = null;
 
   constructor(positions: Float32Array, triangles: Uint32Array) {
+    super();
     this.geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
     this.geometry.setIndex(new THREE.BufferAttribute(triangles, 1));
     this.geometry.setAttribute('scalar', new THREE.BufferAttribute(new Float32Array(positions.length / 3).fill(NO_VALUE), 1));
@@ -151,18 +168,6 @@ if (regionColorMix > 0.0) diffuseColor.rgb = mix(diffuseColor.rgb, vRegionColor,
     material.customProgramCacheKey = () => 'cscd-scalar-surface';
     this.object = new THREE.Mesh(this.geometry, material);
     this.object.name = 'surface';
-  }
-
-  get vertexCount(): number {
-    return this.geometry.getAttribute('position').count;
-  }
-
-  get boundingSphere(): THREE.Sphere {
-    return this.geometry.boundingSphere!;
-  }
-
-  vertexPosition(index: number, target = new THREE.Vector3()): THREE.Vector3 {
-    return target.fromBufferAttribute(this.geometry.getAttribute('position') as THREE.BufferAttribute, index);
   }
 
   /** The vertex nearest to a point in space (for placing markers and lifting lines off the surface). */
@@ -258,6 +263,76 @@ if (regionColorMix > 0.0) diffuseColor.rgb = mix(diffuseColor.rgb, vRegionColor,
     this.uniforms.scalarLut.value.dispose();
   }
 }
+
+/** Point size in CSS pixels: the same on screen at any zoom, so a dense cloud reads as a surface. */
+const POINT_SIZE_PX = 3;
+
+/**
+ * A point cloud: one THREE.Points draw call over the worker's float32 positions (a million points
+ * stay interactive), sprites of a fixed screen size. Region colours go into a per-point colour
+ * attribute; the mesh-only looks (scalar fields, isolines, flat shading, the sphere tint) have no
+ * counterpart on points and are no-ops, so whole-shape stages drive both layers alike.
+ */
+export class PointsLayer extends PositionsLayer implements Layer {
+  readonly label = 'Points';
+  readonly object: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
+  private readonly base = new THREE.Color(BASE_COLOR).convertSRGBToLinear();
+  private regionColors: Float32Array | null = null;
+
+  constructor(positions: Float32Array, pixelRatio: number) {
+    super();
+    this.geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+    this.geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(positions.length), 3));
+    this.geometry.computeBoundingSphere();
+    const material = new THREE.PointsMaterial({ size: POINT_SIZE_PX * pixelRatio, sizeAttenuation: false, vertexColors: true });
+    this.object = new THREE.Points(this.geometry, material);
+    this.object.name = 'surface';
+    this.setRegionColorMix(0);
+  }
+
+  setRegionColors(colors: Float32Array | null, mix = 1): void {
+    this.regionColors = colors;
+    this.setRegionColorMix(colors ? mix : 0);
+  }
+
+  setRegionColorMix(mix: number): void {
+    const attribute = this.geometry.getAttribute('color') as THREE.BufferAttribute;
+    const out = attribute.array as Float32Array;
+    const colors = this.regionColors;
+    const { r, g, b } = this.base;
+    for (let i = 0; i < out.length; i += 3) {
+      out[i] = r + (colors && mix > 0 ? (colors[i] - r) * mix : 0);
+      out[i + 1] = g + (colors && mix > 0 ? (colors[i + 1] - g) * mix : 0);
+      out[i + 2] = b + (colors && mix > 0 ? (colors[i + 2] - b) * mix : 0);
+    }
+    attribute.needsUpdate = true;
+  }
+
+  /** See-through: faint points, so the skeleton inside shows. */
+  setTranslucent(on: boolean): void {
+    const material = this.object.material;
+    if (material.transparent === on) return;
+    material.transparent = on;
+    material.opacity = on ? 0.35 : 1;
+    material.depthWrite = !on;
+    material.needsUpdate = true;
+  }
+
+  setDimmed(): void {}
+  setRegion(): void {}
+  setScalarVisible(): void {}
+  setScalarField(): void {}
+  setIsolines(): void {}
+  setFlatShading(): void {}
+
+  dispose(): void {
+    this.geometry.dispose();
+    this.object.material.dispose();
+  }
+}
+
+/** What the viewer shows the shape with: a mesh's surface or a cloud's points. */
+export type ShapeLayer = SurfaceLayer | PointsLayer;
 
 /** Spheres with their own centres and radii (source markers, medial balls). */
 export class SpheresLayer implements Layer {

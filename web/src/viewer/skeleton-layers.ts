@@ -6,7 +6,7 @@ import * as THREE from 'three';
 import type { SkeletonData } from '../worker/protocol.ts';
 import { COLORS } from '../stage-defs.ts';
 import { turbo } from './colormap.ts';
-import { DIM_GREY, DIM_MIX, SpheresLayer, type Layer, type SurfaceLayer } from './layers.ts';
+import { DIM_GREY, DIM_MIX, SpheresLayer, type Layer, type ShapeLayer } from './layers.ts';
 import { TubesLayer, graphSegments, liftOffSurface, polylineSegments } from './tubes.ts';
 import type { NamedLayer } from './separator-layers.ts';
 
@@ -27,7 +27,7 @@ export class LoopSet {
   private readonly segments: Float32Array[] = [];
 
   constructor(
-    private readonly surface: SurfaceLayer,
+    private readonly surface: ShapeLayer,
     private readonly lift: number,
   ) {}
 
@@ -89,7 +89,7 @@ function concat(parts: Float32Array[]): Float32Array {
 }
 
 /** The tube radius (world units) of the progressive candidate loops. */
-export function candidateRadius(surface: SurfaceLayer): number {
+export function candidateRadius(surface: ShapeLayer): number {
   return RADIUS.candidate * surface.boundingSphere.radius;
 }
 
@@ -98,7 +98,7 @@ export function candidateRadius(surface: SurfaceLayer): number {
  * one per iteration so the caller can let the page breathe in between (lifting hundreds of loops off
  * the surface takes a while on a large mesh).
  */
-export function* skeletonLayers(s: SkeletonData, surface: SurfaceLayer): Generator<NamedLayer> {
+export function* skeletonLayers(s: SkeletonData, surface: ShapeLayer): Generator<NamedLayer> {
   const R = surface.boundingSphere.radius;
   for (const [name, label, packed, radius, color] of [
     ['sk-rejected', 'Rejected loops', false, RADIUS.rejected, COLORS.rejected],

@@ -3,7 +3,7 @@
  * ball at every joint, so corners stay round and closed loops have no seam) and a translucent sphere.
  */
 import * as THREE from 'three';
-import { DIM_GREY, DIM_MIX, type Layer, type SurfaceLayer } from './layers.ts';
+import { DIM_GREY, DIM_MIX, SurfaceLayer, type Layer, type ShapeLayer } from './layers.ts';
 
 const Y = new THREE.Vector3(0, 1, 0);
 
@@ -130,10 +130,12 @@ export function graphSegments(points: ArrayLike<number>, edges: ArrayLike<number
 
 /**
  * Moves points that lie on the surface a little along the normal of their nearest vertex, so tubes
- * drawn through them sit on the surface instead of half inside it.
+ * drawn through them sit on the surface instead of half inside it. Over a cloud's points (no normals,
+ * no surface to sink into) they stay where they are.
  */
-export function liftOffSurface(points: ArrayLike<number>, surface: SurfaceLayer, offset: number): Float32Array {
+export function liftOffSurface(points: ArrayLike<number>, surface: ShapeLayer, offset: number): Float32Array {
   const out = Float32Array.from(points);
+  if (!(surface instanceof SurfaceLayer)) return out;
   const p = new THREE.Vector3();
   const normal = new THREE.Vector3();
   for (let i = 0; i + 2 < out.length; i += 3) {

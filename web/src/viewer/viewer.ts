@@ -4,9 +4,10 @@
  */
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
-import { SurfaceLayer, type Layer } from './layers.ts';
+import { PointsLayer, SurfaceLayer, type Layer, type ShapeLayer } from './layers.ts';
 
 export interface Pick {
+  /** The hit face; -1 on a point cloud. */
   face: number;
   /** The corner of the hit face nearest to the hit point. */
   vertex: number;
@@ -133,10 +134,15 @@ export class Viewer {
     for (const name of [...this.layers.keys()]) this.setLayer(name, null);
   }
 
-  /** The mesh surface (picking target, scalar fields). */
-  get surface(): SurfaceLayer | null {
+  /** The shape: a mesh's surface (picking target, scalar fields) or a cloud's points. */
+  get surface(): ShapeLayer | null {
     const layer = this.layers.get('surface');
-    return layer instanceof SurfaceLayer ? layer : null;
+    return layer instanceof SurfaceLayer || layer instanceof PointsLayer ? layer : null;
+  }
+
+  /** Drawing-buffer pixels per CSS pixel at rest (point sprites are sized in them). */
+  get restPixelRatio(): number {
+    return this.pixelRatio;
   }
 
   // -- camera -----------------------------------------------------------------------------------
@@ -211,6 +217,7 @@ export class Viewer {
     const surface = this.surface;
     if (!surface || !surface.object.visible) return null;
     this.rayAt(clientX, clientY);
+    if (surface instanceof PointsLayer) return this.pickPoint(surface);
     const hit = this.raycaster.intersectObject(surface.object, false)[0];
     if (!hit?.face || hit.faceIndex == null) return null;
     let vertex = hit.face.a;
@@ -221,6 +228,13 @@ export class Viewer {
       if (d < best) [best, vertex] = [d, v];
     }
     return { face: hit.faceIndex, vertex, point: hit.point.clone() };
+  }
+
+  /** The point nearest the camera among those within a hundredth of the cloud's radius of the ray. */
+  private pickPoint(points: PointsLayer): Pick | null {
+    this.raycaster.params.Points.threshold = points.boundingSphere.radius * 0.01;
+    const hit = this.raycaster.intersectObject(points.object, false)[0];
+    return hit?.index == null ? null : { face: -1, vertex: hit.index, point: hit.point.clone() };
   }
 
   /** Window position of a vertex (for tests and overlays). */

@@ -17,7 +17,6 @@ import type { Options, Refinement } from '../../../lib/core/types.ts';
 import {
   type DecimatedReply,
   type ErrorKind,
-  type OpenedReply,
   type PipelineNews,
   type ProgressEvent,
   type ReplyFor,
@@ -41,12 +40,12 @@ export interface ClientHooks {
   /** Progress of any request. */
   onProgress?(event: ProgressEvent): void;
   /** The worker died: `message` says why; `restored` settles when the new worker has the mesh again. */
-  onCrash?(message: string, restored: Promise<OpenedReply | null>): void;
+  onCrash?(message: string, restored: Promise<ReplyFor['open'] | null>): void;
   /**
    * The worker was replaced without a crash: to stop a cancelled job that did not stop in time, or
    * to get its memory back after an out-of-memory error (which the request that hit it reports).
    */
-  onRestart?(restored: Promise<OpenedReply | null>): void;
+  onRestart?(restored: Promise<ReplyFor['open'] | null>): void;
 }
 
 /** A running computation. */
@@ -72,7 +71,7 @@ interface Pending {
  * coarse), or the arrays of the decimated mesh as the worker computed on them.
  */
 type KeptMesh =
-  | { fileName: string; bytes: ArrayBuffer }
+  | { fileName: string; bytes: ArrayBuffer; neighbours: number }
   | { fileName: string; positions: Float64Array; triangles: Uint32Array; refined: Refinement | null };
 
 const UNCANCELLABLE = new Set<WorkerRequest['type']>(['open', 'restore', 'write']);
@@ -111,11 +110,14 @@ export class GeometryClient {
     this.worker = this.spawn();
   }
 
-  /** Opens a mesh file in the worker. `bytes` is transferred (detached) after a copy is kept. */
-  async open(fileName: string, bytes: ArrayBuffer): Promise<OpenedReply> {
+  /**
+   * Opens a mesh or point-cloud file in the worker (a cloud with `neighbours` per point). `bytes` is
+   * transferred (detached) after a copy is kept.
+   */
+  async open(fileName: string, bytes: ArrayBuffer, neighbours: number): Promise<ReplyFor['open']> {
     const kept = bytes.slice(0);
-    const reply = await this.request({ type: 'open', fileName, bytes, withArrays: true }, [bytes]);
-    this.current = { fileName, bytes: kept };
+    const reply = await this.request({ type: 'open', fileName, bytes, withArrays: true, neighbours }, [bytes]);
+    this.current = { fileName, bytes: kept, neighbours };
     return reply;
   }
 
@@ -260,11 +262,11 @@ export class GeometryClient {
       return;
     }
     this.worker = this.spawn();
-    let restored: Promise<OpenedReply | null> = Promise.resolve(null);
+    let restored: Promise<ReplyFor['open'] | null> = Promise.resolve(null);
     const kept = this.current;
     if (kept && 'bytes' in kept) {
       const copy = kept.bytes.slice(0);
-      restored = this.request({ type: 'open', fileName: kept.fileName, bytes: copy, withArrays: false }, [copy]);
+      restored = this.request({ type: 'open', fileName: kept.fileName, bytes: copy, withArrays: false, neighbours: kept.neighbours }, [copy]);
     } else if (kept) {
       const positions = kept.positions.slice(), triangles = kept.triangles.slice();
       restored = this.request({ type: 'restore', fileName: kept.fileName, positions, triangles, refined: kept.refined }, [positions.buffer, triangles.buffer]);

@@ -6,9 +6,9 @@
  * travel in transfer lists in both directions (see `transferables`).
  */
 import type { RunSettings } from '../../../lib/core/options.ts';
-import type { Evaluation, MeshFacts, Options, Refinement, Separator, Skeleton } from '../../../lib/core/types.ts';
+import type { CloudFacts, Evaluation, MeshFacts, Options, Refinement, Separator, Skeleton } from '../../../lib/core/types.ts';
 import type { SkeletonFormat } from '../../../lib/io/skeleton.ts';
-import type { MeshFormat } from '../../../lib/io/types.ts';
+import type { MeshFormat, ShapeFormat } from '../../../lib/io/types.ts';
 
 // ---------------------------------------------------------------------------------------------
 // Page -> worker
@@ -21,6 +21,8 @@ export interface OpenRequest {
   bytes: ArrayBuffer;
   /** Send positions and triangles back (false when re-opening a mesh the page already shows). */
   withArrays: boolean;
+  /** k of a point cloud's neighbourhoods (the `neighbours` option), should the file be one. */
+  neighbours: number;
 }
 
 /**
@@ -134,6 +136,7 @@ export interface OpenTimings {
 
 export interface OpenedReply {
   type: 'opened';
+  shape: 'mesh';
   id: number;
   fileName: string;
   format: MeshFormat;
@@ -156,6 +159,25 @@ export interface OpenedReply {
    * that needs it, which then fails with the reason.
    */
   surfaceError: string | null;
+  timings: OpenTimings;
+}
+
+/**
+ * A point cloud opened (checked, subsampled when above POINT_LIMIT, opened in the core with its
+ * neighbours): the page draws its points; only the whole-shape stages compute on it.
+ */
+export interface CloudOpenedReply {
+  type: 'opened';
+  shape: 'cloud';
+  id: number;
+  fileName: string;
+  format: ShapeFormat;
+  /** xyz per point (float32 for the GPU); empty when the request had `withArrays: false`. */
+  positions: Float32Array;
+  facts: CloudFacts;
+  warnings: string[];
+  /** What the checks on load did (lib/io/cloud-check.ts) and a subsampling, one sentence each. */
+  repairs: string[];
   timings: OpenTimings;
 }
 
@@ -300,6 +322,7 @@ export interface ProgressEvent {
 
 export type WorkerReply =
   | OpenedReply
+  | CloudOpenedReply
   | SeparatorReply
   | SkeletonReply
   | EvaluationReply
@@ -310,7 +333,7 @@ export type WorkerMessage = WorkerReply | ProgressEvent;
 
 /** The reply type that answers each request type. */
 export interface ReplyFor {
-  open: OpenedReply;
+  open: OpenedReply | CloudOpenedReply;
   separator: SeparatorReply;
   skeleton: SkeletonReply;
   evaluate: EvaluationReply;

@@ -1,8 +1,9 @@
 /// <reference lib="webworker" />
 /**
- * The geometry worker: parses mesh files and runs the WASM core, one request at a time, so the
- * page never blocks. Holds at most one open mesh; its geodesic solver (the prefactored Surface, the
- * costly part on a large mesh) is opened by the first request that needs it.
+ * The geometry worker: parses mesh and point-cloud files and runs the WASM core, one request at a
+ * time, so the page never blocks. Holds at most one open shape: a mesh, whose geodesic solver (the
+ * prefactored Surface, the costly part on a large mesh) is opened by the first request that needs it,
+ * or a point cloud, opened in the core at once (its neighbourhoods are what the facts report).
  */
 import { createCore } from '../../../lib/core/index.ts';
 import { AUTO_N, defaultOptions, MESH_OPTIONS } from '../../../lib/core/options.ts';
@@ -10,6 +11,7 @@ import { runStage1 } from '../../../lib/core/pool.ts';
 import { poolSize } from '../../../lib/core/pool-size.ts';
 import {
   CoreError,
+  type Cloud,
   type Core,
   type MeshArrays,
   type MeshFacts,
@@ -21,11 +23,14 @@ import {
   type Skeleton,
   type Surface,
 } from '../../../lib/core/types.ts';
-import { parseMesh } from '../../../lib/io/index.ts';
+import { subsampleCloud } from '../../../lib/cloud/subsample.ts';
+import { checkCloud } from '../../../lib/io/cloud-check.ts';
+import { parseShape, type ParsedCloud } from '../../../lib/io/index.ts';
 import { repairMesh } from '../../../lib/io/repair.ts';
 import { writeLoopsObj } from '../../../lib/io/loops.ts';
 import { SKELETON_WRITERS } from '../../../lib/io/skeleton.ts';
 import { Decimator } from '../../../lib/mesh/decimate.ts';
+import { POINT_LIMIT, SUBSAMPLE_TARGET } from '../../../lib/mesh/limits.ts';
 import { refine, refinementOf, skeletonForInput } from '../../../lib/mesh/refine.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
 import { PagePool, type WebSeparatorWorker } from './page-pool.ts';
@@ -89,6 +94,28 @@ interface OpenMesh {
 }
 let current: OpenMesh | null = null;
 
+interface OpenCloud {
+  cloud: Cloud;
+  /** The last skeleton computed, with its options, for `write`. */
+  lastSkeleton: { skeleton: Skeleton; options: Options } | null;
+}
+let currentCloud: OpenCloud | null = null;
+
+/** Why a mesh-only request fails: no mesh open, or a point cloud is. */
+function noMesh(what: string): UserError {
+  return new UserError('core', currentCloud ? `${what} is for meshes only for now; the open file is a point cloud.` : 'No mesh is open.');
+}
+
+/** Releases the open shape, its solver and its separator workers, before another is opened. */
+function closeShapes(): void {
+  current?.surface?.dispose();
+  current = null;
+  currentCloud?.cloud.dispose();
+  currentCloud = null;
+  pool?.dispose();
+  pool = null;
+}
+
 function post(message: WorkerMessage, transfer: Transferable[] = []): void {
   self.postMessage(message, transfer);
 }
@@ -132,7 +159,8 @@ async function open(request: OpenRequest): Promise<void> {
   const { id, fileName } = request;
   progress(id, 'parse', `reading ${fileName}…`);
   const t = performance.now();
-  const parsed = parseMesh(new Uint8Array(request.bytes), fileName);
+  const parsed = parseShape(new Uint8Array(request.bytes), fileName);
+  if (parsed.kind === 'cloud') return openCloud(request, parsed, t);
   // Repair on load is part of reading the file: the page only ever sees the repaired mesh.
   const { mesh: repaired, repairs } = repairMesh(parsed);
   const parseMs = performance.now() - t;
@@ -144,6 +172,7 @@ async function open(request: OpenRequest): Promise<void> {
   post(
     {
       type: 'opened',
+      shape: 'mesh',
       id,
       fileName,
       format: parsed.format,
@@ -160,13 +189,52 @@ async function open(request: OpenRequest): Promise<void> {
   );
 }
 
+/**
+ * A point cloud: checked as the CLI checks it (a bad cloud is refused with its message), subsampled
+ * above POINT_LIMIT (to SUBSAMPLE_TARGET points, said among the repairs: the page computes on the
+ * subsample, as the CLI advises), then opened in the core with `neighbours`.
+ */
+async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: number): Promise<void> {
+  const { id, fileName, neighbours } = request;
+  const { cloud: checked, repairs } = checkCloud(parsed, neighbours);
+  const points = checked.positions.length / 3;
+  if (points > POINT_LIMIT) progress(id, 'parse', `subsampling ${points} points to ${SUBSAMPLE_TARGET}…`); // seconds at a million
+  const cloud = points > POINT_LIMIT ? subsampleCloud(checked, SUBSAMPLE_TARGET, defaultOptions.seed) : checked;
+  if (cloud !== checked) {
+    repairs.push(`subsampled from ${points} to ${cloud.positions.length / 3} points (Poisson-disk, seed ${defaultOptions.seed}): above ${POINT_LIMIT} points the skeleton takes too long`);
+  }
+  const parseMs = performance.now() - started;
+  const core = await loadCore(id);
+  progress(id, 'inspect', 'finding the neighbours of every point…');
+  const t = performance.now();
+  closeShapes();
+  currentCloud = { cloud: core.openCloud(cloud, { neighbours }), lastSkeleton: null };
+  const inspectMs = performance.now() - t;
+  const positions = request.withArrays ? new Float32Array(cloud.positions) : new Float32Array(0);
+  post(
+    {
+      type: 'opened',
+      shape: 'cloud',
+      id,
+      fileName,
+      format: parsed.format,
+      positions,
+      facts: currentCloud.cloud.facts,
+      warnings: parsed.warnings,
+      repairs,
+      timings: { parseMs, inspectMs },
+    },
+    transferables(positions),
+  );
+}
+
 /** A mesh the page had decimated in a worker before this one: opened as it is. */
 async function restore(request: RestoreRequest): Promise<void> {
   const { id, fileName } = request;
   const { facts, refined, surfaceError, inspectMs } = await accept(id, { positions: request.positions, triangles: request.triangles }, request.refined);
   // Only says the mesh is open again: the page still shows it, with the format and notes of its first open.
   const empty = { positions: new Float32Array(0), triangles: new Uint32Array(0) };
-  post({ type: 'opened', id, fileName, format: 'ply', ...empty, facts, warnings: [], repairs: [], refined, surfaceError, timings: { parseMs: 0, inspectMs } });
+  post({ type: 'opened', shape: 'mesh', id, fileName, format: 'ply', ...empty, facts, warnings: [], repairs: [], refined, surfaceError, timings: { parseMs: 0, inspectMs } });
 }
 
 /**
@@ -189,9 +257,7 @@ async function accept(
   const mesh = refined && known === undefined ? refine(input, refined.levels) : input;
   const computedOn = mesh === input ? facts : core.inspect(mesh);
   const inspectMs = performance.now() - t;
-  current?.surface?.dispose();
-  pool?.dispose();
-  pool = null;
+  closeShapes();
   current = { mesh, facts: computedOn, refined, surface: null, surfaceError: null, lastSource: null, lastSkeleton: null };
   if (!facts.manifold || !facts.consistentlyOriented) {
     try {
@@ -212,7 +278,7 @@ async function accept(
  */
 async function withSurface(id: number, unavailable: string): Promise<{ mesh: OpenMesh; surface: Surface }> {
   const mesh = current;
-  if (!mesh) throw new UserError('core', 'No mesh is open.');
+  if (!mesh) throw noMesh('Stage 1 from one source');
   if (!mesh.surface && !mesh.surfaceError) {
     const core = await loadCore(id);
     progress(id, 'prepare', 'preparing the geodesic solver…');
@@ -385,26 +451,30 @@ function lostNotice(error: unknown, left: number): string {
   return `a separator worker ${what} (${message}): continuing on ${left > 0 ? `${left} worker${left === 1 ? '' : 's'}` : 'the geometry worker alone'}`;
 }
 
+/** Separator workers `request` asks for on a shape of `vertices` points (lib/core/pool-size.ts). */
+function poolSizeFor(request: SkeletonRequest, options: Options, vertices: number) {
+  return poolSize({
+    workers: request.workers,
+    cores: navigator.hardwareConcurrency || 1,
+    memoryGB: (navigator as WorkerNavigator & { deviceMemory?: number }).deviceMemory ?? null,
+    vertices,
+    roundSize: options.roundSize,
+    sourcesLeft: options.n === 'auto' ? AUTO_N.max : options.n,
+  });
+}
+
 async function skeleton(request: SkeletonRequest): Promise<void> {
   const { id } = request;
   const check = () => checkCancelled(id);
   check();
   const options: Options = { ...defaultOptions, ...request.options };
+  if (currentCloud) return cloudSkeleton(request, currentCloud, options);
   const open = current;
   if (pool && (pool.owner !== open || pool.optionsKey !== optionsKey(options))) {
     pool.dispose();
     pool = null;
   }
-  const size = open && !open.surfaceError
-    ? poolSize({
-        workers: request.workers,
-        cores: navigator.hardwareConcurrency || 1,
-        memoryGB: (navigator as WorkerNavigator & { deviceMemory?: number }).deviceMemory ?? null,
-        vertices: open.mesh.positions.length / 3,
-        roundSize: options.roundSize,
-        sourcesLeft: options.n === 'auto' ? AUTO_N.max : options.n,
-      })
-    : { workers: 1, memoryCapped: false };
+  const size = open && !open.surfaceError ? poolSizeFor(request, options, open.mesh.positions.length / 3) : { workers: 1, memoryCapped: false };
   // The separator workers open the mesh while this worker opens its solver.
   const t0 = performance.now();
   const starting = open && size.workers > 1 ? poolFor(open, options, await modulePromise, size.workers) : null;
@@ -421,11 +491,11 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
   let running = true;
   let finished = false;
   try {
-    let steps = 0;
-    let stage1Ms = 0;
+    let stage1: Stage1Run;
     if (started.workers.length > 0) {
       const t = performance.now();
       let left = report.workers;
+      let steps = 0;
       await runStage1(pipeline, started.workers, {
         check,
         progress: (p) => {
@@ -438,36 +508,12 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
           report.notices.push(lostNotice(error, --left));
         },
       });
-      stage1Ms = performance.now() - t;
+      stage1 = { stage1Ms: performance.now() - t, steps };
     } else {
-      let k = 1;
-      for (;;) {
-        await yieldToEvents();
-        check();
-        const t = performance.now();
-        const p = pipeline.step(k);
-        const ms = performance.now() - t;
-        stage1Ms += ms;
-        steps++;
-        postSources(id, p, report.notices);
-        if (p.finished || (p.total > 0 && p.done >= p.total)) break;
-        k = nextStepSize(k, ms);
-      }
+      stage1 = await stepAlone(id, pipeline, report.notices);
     }
     running = false;
-    await yieldToEvents();
-    check();
-    progress(id, 'stage2', 'stage 2: pruning, packing, regions, skeleton…');
-    const t = performance.now();
-    const result = pipeline.finish();
-    const stage2Ms = performance.now() - t;
-    mesh.lastSkeleton = { skeleton: result, options };
-    const data = skeletonToWire(result);
-    const c = data.candidates;
-    post(
-      { type: 'skeleton', id, skeleton: data, options, pool: report, timings: { stage1Ms, stage2Ms, steps } },
-      transferables(data.nodes, data.radii, data.edges, data.vertexToNode, data.packed, c.sources, c.scores, ...c.loops),
-    );
+    mesh.lastSkeleton = { skeleton: await finishRun(id, pipeline, options, report, stage1), options };
     finished = true;
   } finally {
     running = false;
@@ -481,10 +527,73 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
   }
 }
 
+/** Stage 1's wall time (alone: its steps summed; on a pool: from the first round to the last) and its steps or rounds. */
+interface Stage1Run {
+  stage1Ms: number;
+  steps: number;
+}
+
+/** Stage 1 on this worker alone, a few sources a step, a cancel honoured between steps. */
+async function stepAlone(id: number, pipeline: Pipeline, notices: readonly string[]): Promise<Stage1Run> {
+  let k = 1;
+  let stage1Ms = 0;
+  let steps = 0;
+  for (;;) {
+    await yieldToEvents();
+    checkCancelled(id);
+    const t = performance.now();
+    const p = pipeline.step(k);
+    const ms = performance.now() - t;
+    stage1Ms += ms;
+    steps++;
+    postSources(id, p, notices);
+    if (p.finished || (p.total > 0 && p.done >= p.total)) return { stage1Ms, steps };
+    k = nextStepSize(k, ms);
+  }
+}
+
+/** Stage 2, then the `skeleton` reply; returns the skeleton in full precision for the worker to keep. */
+async function finishRun(id: number, pipeline: Pipeline, options: Options, report: PoolReport, stage1: Stage1Run): Promise<Skeleton> {
+  await yieldToEvents();
+  checkCancelled(id);
+  progress(id, 'stage2', 'stage 2: pruning, packing, regions, skeleton…');
+  const t = performance.now();
+  const result = pipeline.finish();
+  const stage2Ms = performance.now() - t;
+  const data = skeletonToWire(result);
+  const c = data.candidates;
+  post(
+    { type: 'skeleton', id, skeleton: data, options, pool: report, timings: { ...stage1, stage2Ms } },
+    transferables(data.nodes, data.radii, data.edges, data.vertexToNode, data.packed, c.sources, c.scores, ...c.loops),
+  );
+  return result;
+}
+
+/** CSCD-PC on this worker: no pool opens a cloud yet, which the report says when more workers were asked for. */
+async function cloudSkeleton(request: SkeletonRequest, open: OpenCloud, options: Options): Promise<void> {
+  const { id } = request;
+  const asked = poolSizeFor(request, options, open.cloud.facts.points).workers;
+  const report: PoolReport = {
+    workers: 1,
+    memoryCapped: false,
+    notices: asked > 1 ? [`stage 1 of a point cloud runs on the geometry worker alone, not on ${asked} workers: worker pools open meshes only for now`] : [],
+    openMs: 0,
+  };
+  progress(id, 'sources', 'stage 1: starting…');
+  const pipeline = open.cloud.pipeline(options);
+  try {
+    const stage1 = await stepAlone(id, pipeline, report.notices);
+    open.lastSkeleton = { skeleton: await finishRun(id, pipeline, options, report, stage1), options };
+  } finally {
+    pipeline.dispose();
+  }
+}
+
 // -- evaluation -------------------------------------------------------------------------------------
 
 async function evaluate(request: EvaluateRequest): Promise<void> {
   const { id } = request;
+  if (currentCloud) throw noMesh('The reconstruction error');
   if (!current?.lastSkeleton) throw new UserError('core', 'There is no skeleton to evaluate: compute one first.');
   const core = await loadCore(id);
   progress(id, 'evaluate', 'reconstructing the surface from the skeleton…');
@@ -508,7 +617,7 @@ const COLLAPSES_PER_STEP = 5000;
 
 async function decimate(request: DecimateRequest): Promise<void> {
   const { id, targetFaces } = request;
-  if (!current) throw new UserError('core', 'No mesh is open.');
+  if (!current) throw noMesh('Decimation');
   const from = current.facts.faces;
   progress(id, 'decimate', `decimating ${from} faces…`);
   const t = performance.now();
@@ -540,10 +649,10 @@ async function decimate(request: DecimateRequest): Promise<void> {
  * formatting a large skeleton stays off the main thread.
  */
 function write(request: WriteRequest): void {
-  const last = current?.lastSkeleton;
-  if (!last || !current) throw new UserError('core', 'There is no skeleton to save: compute one first.');
+  const last = currentCloud ? currentCloud.lastSkeleton : current?.lastSkeleton;
+  if (!last) throw new UserError('core', 'There is no skeleton to save: compute one first.');
   // A file is for the mesh as opened, like the CLI's: vertexToNode over its vertices, not the refined mesh's.
-  const skeleton = skeletonForInput(last.skeleton, current.refined);
+  const skeleton = skeletonForInput(last.skeleton, current?.refined ?? null);
   const { options } = last;
   const text =
     request.what === 'separators-obj'

@@ -1,7 +1,7 @@
 /**
  * Point clouds in the page: a cloud dropped on the window opens as points (its facts, the neighbours
- * option, the mesh-only stages disabled) and runs to a skeleton on one worker, saying so when more were
- * asked for; a cloud the checks refuse shows the message the CLI gives, and the open shape stays.
+ * option, the mesh-only stages disabled) and runs to a skeleton, stage 1 on the pool of separator workers
+ * as a mesh's; a cloud the checks refuse shows the message the CLI gives, and the open shape stays.
  */
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
@@ -25,7 +25,7 @@ async function drop(page: Page, name: string, bytes: Buffer): Promise<void> {
 const xyz = (rows: number, z: (i: number) => number) =>
   Buffer.from(Array.from({ length: rows }, (_, i) => `${i % 10} ${Math.floor(i / 10)} ${z(i)}`).join('\n'));
 
-test('a dropped point cloud runs to a skeleton with its cycle, on one worker', async ({ page }) => {
+test('a dropped point cloud runs to a skeleton with its cycle, on two workers', async ({ page }) => {
   // n = 40, seed 1: bob_subsample keeps its one cycle (tests/unit/cloud-skeleton.test.ts); two workers asked for.
   await openPage(page, '/#n=40&workers=2');
   await expect(page.getByTestId('opt-neighbours')).toBeHidden();
@@ -45,9 +45,9 @@ test('a dropped point cloud runs to a skeleton with its cycle, on one worker', a
   expect(await figure(page, 'sk-cycles')).toBe(1);
   expect(await figure(page, 'sk-nodes')).toBeGreaterThan(1);
   await expect(page.getByTestId('sk-n')).toHaveText('40');
-  await expect(page.getByTestId('sk-status')).toContainText('geometry worker alone');
+  await expect(page.getByTestId('sk-status')).toContainText('Stage 1 on 2 workers.');
   const run = await page.evaluate(() => window.cscd!.skeletonRun());
-  expect(run?.workers).toBe(1);
+  expect(run?.workers).toBe(2);
   // The file saved is the CLI's, with a node per point.
   const json = await downloadSkeletonJson(page);
   expect(json.vertexToNode).toHaveLength(1948);

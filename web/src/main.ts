@@ -188,7 +188,7 @@ function showMesh(reply: OpenedReply, sample: string | null): void {
 }
 
 /** What a cloud is not computed on yet, in its notes. */
-const CLOUD_NOTE = 'Point cloud: the whole-shape stages run on it (stage 1 on one worker); stage 1 from one source, the reconstruction error and decimation are for meshes only for now';
+const CLOUD_NOTE = 'Point cloud: the whole-shape stages run on it; stage 1 from one source, the reconstruction error and decimation are for meshes only for now';
 
 function showCloud(reply: CloudOpenedReply, reopen: () => Promise<boolean>): void {
   const t = reply.timings;

@@ -8,10 +8,11 @@
 import { createCore } from '../../../lib/core/index.ts';
 import { AUTO_N, defaultOptions, MESH_OPTIONS } from '../../../lib/core/options.ts';
 import { runStage1 } from '../../../lib/core/pool.ts';
-import { poolSize } from '../../../lib/core/pool-size.ts';
+import { CLOUD_VERTICES_PER_POINT, poolSize } from '../../../lib/core/pool-size.ts';
 import {
   CoreError,
   type Cloud,
+  type CloudArrays,
   type Core,
   type MeshArrays,
   type MeshFacts,
@@ -96,6 +97,9 @@ let current: OpenMesh | null = null;
 
 interface OpenCloud {
   cloud: Cloud;
+  /** The cloud as opened (after the checks and any subsample), for the separator workers to open too. */
+  arrays: CloudArrays;
+  neighbours: number;
   /** The last skeleton computed, with its options, for `write`. */
   lastSkeleton: { skeleton: Skeleton; options: Options } | null;
 }
@@ -208,7 +212,7 @@ async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: num
   progress(id, 'inspect', 'finding the neighbours of every point…');
   const t = performance.now();
   closeShapes();
-  currentCloud = { cloud: core.openCloud(cloud, { neighbours }), lastSkeleton: null };
+  currentCloud = { cloud: core.openCloud(cloud, { neighbours }), arrays: cloud, neighbours, lastSkeleton: null };
   const inspectMs = performance.now() - t;
   const positions = request.withArrays ? new Float32Array(cloud.positions) : new Float32Array(0);
   post(
@@ -427,16 +431,18 @@ const optionsKey = (options: Options) => JSON.stringify(MESH_OPTIONS.map((o) => 
 
 let separatorWorkersStarted = 0;
 /**
- * The pool (started on `mesh` with `options` when there is none) and its `count` workers getting
- * ready; the first separator worker this geometry worker ever starts carries the page's crash hook.
+ * The pool (started on the open mesh or cloud with `options` when there is none) and its `count`
+ * workers getting ready; the first separator worker this geometry worker ever starts carries the
+ * page's crash hook.
  */
-function poolFor(mesh: OpenMesh, options: Options, module: WebAssembly.Module, count: number) {
+function poolFor(owner: OpenMesh | OpenCloud, options: Options, module: WebAssembly.Module, count: number) {
   if (!pool) {
-    pool = new PagePool(mesh, optionsKey(options), () => ({
+    const shape = 'cloud' in owner
+      ? { cloud: owner.arrays, options: { ...options, neighbours: owner.neighbours } }
+      : { mesh: owner.mesh, refine: false, options }; // owner.mesh is what this worker's surface opened: refined already
+    pool = new PagePool(owner, optionsKey(options), () => ({
+      ...shape,
       wasm: module,
-      mesh: mesh.mesh,
-      refine: false, // mesh.mesh is what this worker's surface opened: refined already
-      options,
       memoryLimitMB,
       crashOnRequest: ++separatorWorkersStarted === 1 ? separatorCrash : undefined,
     }));
@@ -468,17 +474,20 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
   const check = () => checkCancelled(id);
   check();
   const options: Options = { ...defaultOptions, ...request.options };
-  if (currentCloud) return cloudSkeleton(request, currentCloud, options);
-  const open = current;
-  if (pool && (pool.owner !== open || pool.optionsKey !== optionsKey(options))) {
+  const cloud = currentCloud;
+  const owner = cloud ?? current;
+  if (pool && (pool.owner !== owner || pool.optionsKey !== optionsKey(options))) {
     pool.dispose();
     pool = null;
   }
-  const size = open && !open.surfaceError ? poolSizeFor(request, options, open.mesh.positions.length / 3) : { workers: 1, memoryCapped: false };
-  // The separator workers open the mesh while this worker opens its solver.
+  // A cloud's core holds about twice a mesh's per element (lib/core/pool-size.ts).
+  const size = cloud
+    ? poolSizeFor(request, options, CLOUD_VERTICES_PER_POINT * cloud.cloud.facts.points)
+    : current && !current.surfaceError ? poolSizeFor(request, options, current.mesh.positions.length / 3) : { workers: 1, memoryCapped: false };
+  // The separator workers open the shape while this worker opens its solver.
   const t0 = performance.now();
-  const starting = open && size.workers > 1 ? poolFor(open, options, await modulePromise, size.workers) : null;
-  const { mesh, surface } = await withSurface(id, 'The skeleton is not available on this mesh');
+  const starting = owner && size.workers > 1 ? poolFor(owner, options, await modulePromise, size.workers) : null;
+  const opened = cloud ? null : await withSurface(id, 'The skeleton is not available on this mesh');
   const started = starting ? await starting.opening : { workers: [], failures: [] };
   const report: PoolReport = {
     workers: Math.max(1, started.workers.length),
@@ -487,7 +496,7 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
     openMs: starting ? performance.now() - t0 : 0,
   };
   progress(id, 'sources', 'stage 1: starting…');
-  let pipeline: Pipeline | null = surface.pipeline(options);
+  let pipeline: Pipeline | null = (cloud ? cloud.cloud : opened!.surface).pipeline(options);
   let running = true;
   let finished = false;
   try {
@@ -513,7 +522,7 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
       stage1 = await stepAlone(id, pipeline, report.notices);
     }
     running = false;
-    mesh.lastSkeleton = { skeleton: await finishRun(id, pipeline, options, report, stage1), options };
+    (cloud ?? opened!.mesh).lastSkeleton = { skeleton: await finishRun(id, pipeline, options, report, stage1), options };
     finished = true;
   } finally {
     running = false;
@@ -567,26 +576,6 @@ async function finishRun(id: number, pipeline: Pipeline, options: Options, repor
     transferables(data.nodes, data.radii, data.edges, data.vertexToNode, data.packed, c.sources, c.scores, ...c.loops),
   );
   return result;
-}
-
-/** CSCD-PC on this worker: no pool opens a cloud yet, which the report says when more workers were asked for. */
-async function cloudSkeleton(request: SkeletonRequest, open: OpenCloud, options: Options): Promise<void> {
-  const { id } = request;
-  const asked = poolSizeFor(request, options, open.cloud.facts.points).workers;
-  const report: PoolReport = {
-    workers: 1,
-    memoryCapped: false,
-    notices: asked > 1 ? [`stage 1 of a point cloud runs on the geometry worker alone, not on ${asked} workers: worker pools open meshes only for now`] : [],
-    openMs: 0,
-  };
-  progress(id, 'sources', 'stage 1: starting…');
-  const pipeline = open.cloud.pipeline(options);
-  try {
-    const stage1 = await stepAlone(id, pipeline, report.notices);
-    open.lastSkeleton = { skeleton: await finishRun(id, pipeline, options, report, stage1), options };
-  } finally {
-    pipeline.dispose();
-  }
 }
 
 // -- evaluation -------------------------------------------------------------------------------------

@@ -11,7 +11,7 @@
 // truth `<stem>__GT.json`, by its tip gap (bench/metrics.ts). The table, a CSV and an SVG go to
 // bench/results/<date>[-quick][-N].{md,csv,svg} (rewritten after every mesh, so an interrupted run
 // keeps what it did); skeletons and logs to .deps/bench/runs/<same name>/.
-import { execFileSync, spawnSync } from 'node:child_process';
+import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readdirSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -24,9 +24,9 @@ import {
   compareErrors, leafIndices, mapByPosition, median, tipGap, VertexMapError, vertexMapRadii, type Comparison, type TipGap,
 } from './metrics.ts';
 import { errorVsSecondsSvg } from './plot.ts';
+import { repoRoot, runPinned, shell, venvPython, type Run } from './process.ts';
 import { claimResultName } from './result-name.ts';
 
-const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
 /** The default meshes: the shared collection, then the synthetic shapes with a known skeleton (`<stem>__GT.json`). */
 const defaultFolders = [path.join(sharedData, 'meshes'), path.join(sharedData, 'synthetic')];
@@ -48,21 +48,11 @@ const DEFAULT_TIMEOUT = { full: 600, quick: 180 };
 const METHODS = ['cscd', 'ls', 'msls', 'mcf'] as const;
 type Method = (typeof METHODS)[number];
 
-const venvPython = path.join(repoRoot, '.deps', 'bench-venv', 'bin', 'python');
 const RUNNERS: Record<Method, { ext: string; command: (mesh: string, out: string) => string[] }> = {
   cscd: { ext: 'json', command: (mesh, out) => [process.execPath, '--import', 'tsx', 'bench/runners/cscd.ts', mesh, out] },
   ls: { ext: 'obj', command: (mesh, out) => [venvPython, 'bench/runners/gel.py', 'ls', mesh, out] },
   msls: { ext: 'obj', command: (mesh, out) => [venvPython, 'bench/runners/gel.py', 'msls', mesh, out] },
   mcf: { ext: 'obj', command: (mesh, out) => [path.join(repoRoot, '.deps', 'bench', 'mcf'), mesh, out] },
-};
-
-/** One thread for every library that would start more (OpenMP in Eigen, BLAS under numpy). */
-const ONE_THREAD_ENV = {
-  OMP_NUM_THREADS: '1',
-  OPENBLAS_NUM_THREADS: '1',
-  MKL_NUM_THREADS: '1',
-  NUMEXPR_NUM_THREADS: '1',
-  VECLIB_MAXIMUM_THREADS: '1',
 };
 
 // ---------------------------------------------------------------------------------------------------
@@ -142,50 +132,11 @@ function parseCommandLine(argv: string[]): Config {
 // ---------------------------------------------------------------------------------------------------
 // Running one method on one mesh
 
-interface Run {
-  status: 'ok' | 'timeout' | 'failed';
-  seconds: number | null;
-  /** Why it failed, one short line. */
-  reason: string;
-  file: string;
-}
 
 /** The line of a failed process's stderr that says why: the last that is not a stack frame or Node's version. */
-function reasonOf(stderr: string): string {
-  const lines = stderr.split('\n').map((l) => l.trim()).filter((l) => l && !/^at\s/.test(l) && !/^Node\.js v/.test(l));
-  const line = lines[lines.length - 1] ?? '';
-  return line.length > 100 ? `${line.slice(0, 97)}...` : line;
-}
-
 function runMethod(method: Method, mesh: string, runDir: string, label: string, timeout: number, cpu: number): Run {
   const file = path.join(runDir, `${label}.${method}.${RUNNERS[method].ext}`);
-  const command = ['taskset', '-c', String(cpu), ...RUNNERS[method].command(mesh, file)];
-  const result = spawnSync(command[0], command.slice(1), {
-    cwd: repoRoot,
-    env: { ...process.env, ...ONE_THREAD_ENV },
-    encoding: 'utf8',
-    timeout: timeout * 1000,
-    killSignal: 'SIGKILL',
-    maxBuffer: 1 << 28,
-  });
-  writeFileSync(path.join(runDir, `${label}.${method}.log`),
-    `$ ${command.join(' ')}\n--- stdout\n${result.stdout ?? ''}\n--- stderr\n${result.stderr ?? ''}`);
-
-  const failed = (reason: string): Run => ({ status: 'failed', seconds: null, reason, file });
-  if ((result.error as NodeJS.ErrnoException | undefined)?.code === 'ETIMEDOUT') return { status: 'timeout', seconds: null, reason: '', file };
-  if (result.error) return failed(result.error.message);
-  if (result.status !== 0) {
-    const why = reasonOf(result.stderr);
-    return failed(result.signal ? `${why ? `${why}, ` : ''}killed by ${result.signal}` : why || `exit code ${result.status}`);
-  }
-  const last = result.stdout.trim().split('\n').pop() ?? '';
-  try {
-    const seconds = (JSON.parse(last) as { seconds?: unknown }).seconds;
-    if (typeof seconds === 'number' && Number.isFinite(seconds)) return { status: 'ok', seconds, reason: '', file };
-  } catch {
-    // Not JSON: reported below.
-  }
-  return failed('no {"seconds": S} line on stdout');
+  return runPinned(RUNNERS[method].command(mesh, file), file, path.join(runDir, `${label}.${method}.log`), timeout, cpu);
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -462,14 +413,6 @@ function csv(rows: Row[]): string {
 /** bench/results/<date>[-quick], or the first of -2, -3... that no earlier run has written. */
 function runName(quick: boolean): string {
   return claimResultName(resultsDir, `${new Date().toISOString().slice(0, 10)}${quick ? '-quick' : ''}`, ['md', 'csv', 'svg']);
-}
-
-function shell(command: string, args: string[]): string {
-  try {
-    return execFileSync(command, args, { cwd: repoRoot, encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }).trim();
-  } catch {
-    return 'unknown';
-  }
 }
 
 function describeMachine(methods: Method[]): string {

@@ -2,6 +2,10 @@
 Local Separators from PyGEL (pygel3d 0.8.2), with the defaults the authors document.
 
     python gel.py ls|msls <mesh.ply|.obj|.off> <skeleton.obj>
+    python gel.py ls|msls --graph <graph.json> <skeleton.obj>
+
+With --graph the input is a point cloud's neighbourhood graph ({"positions": [x, y, z, ...], "edges":
+[a, b, ...]}, written by bench/runners/cscd-cloud.ts): what people run MSLS on when they have points.
 
 Writes the skeleton as OBJ (`v x y z` per node, `l i j` per edge, 1-based), its vertex map beside it as
 `<skeleton>.map.json` ({"vertexToNode": [...], "positions": [...]}, see below), and prints, as the last
@@ -25,24 +29,44 @@ SKELETONISERS = {
 }
 
 
+def graph_from_json(path):
+    with open(path) as f:
+        data = json.load(f)
+    g = graph.Graph()
+    p = data["positions"]
+    nodes = [g.add_node([p[i], p[i + 1], p[i + 2]]) for i in range(0, len(p), 3)]
+    e = data["edges"]
+    for i in range(0, len(e), 2):
+        g.connect_nodes(nodes[e[i]], nodes[e[i + 1]])
+    return g
+
+
 def main() -> int:
-    if len(sys.argv) != 4 or sys.argv[1] not in SKELETONISERS:
-        print("usage: gel.py ls|msls <mesh> <skeleton.obj>", file=sys.stderr)
+    args = sys.argv[1:]
+    from_graph = len(args) == 4 and args[1] == "--graph"
+    if from_graph:
+        args = [args[0], args[2], args[3]]
+    if len(args) != 3 or args[0] not in SKELETONISERS:
+        print("usage: gel.py ls|msls <mesh> <skeleton.obj>  or  gel.py ls|msls --graph <graph.json> <skeleton.obj>", file=sys.stderr)
         return 2
-    method, mesh_path, out_path = sys.argv[1:]
+    method, mesh_path, out_path = args
 
     # GEL reports its progress on stdout from C++; send all of it to stderr so that our JSON stays the
     # last line of stdout whatever the C and C++ runtimes flush at exit.
     result_out = os.fdopen(os.dup(1), "w")
     os.dup2(2, 1)
 
-    mesh = hmesh.load(mesh_path)
-    if mesh is None:
-        print(f"gel: cannot read {mesh_path}", file=sys.stderr)
-        return 1
-
-    started = time.perf_counter()
-    edge_graph = graph.from_mesh(mesh)
+    if from_graph:
+        # Building the graph is reading the input here, not skeletonising: not timed.
+        edge_graph = graph_from_json(mesh_path)
+        started = time.perf_counter()
+    else:
+        mesh = hmesh.load(mesh_path)
+        if mesh is None:
+            print(f"gel: cannot read {mesh_path}", file=sys.stderr)
+            return 1
+        started = time.perf_counter()
+        edge_graph = graph.from_mesh(mesh)
     skeleton, node_of = SKELETONISERS[method](edge_graph)
     seconds = time.perf_counter() - started
 

@@ -1,0 +1,187 @@
+// `npm run bench:clouds`: CSCD-PC on the shared point clouds, against MSLS run on the same cloud's
+// neighbourhood graph (pygel3d, the baseline people can run on points) and against CSCD-M on the mesh the
+// cloud was sampled from.
+//
+//   npm run bench:clouds [-- [--clouds a,b] [--timeout S] [--cpu N] [--no-build]]
+//
+// Every method runs in its own process pinned to one core (bench/process.ts), with its default options.
+// Each skeleton is scored by the paper's reconstruction error against the source mesh (`core.evaluate`,
+// radii derived from the mesh by one rule for all) and against the cloud's points (`core.evaluateCloud`,
+// radii derived around the points); cycles against the source mesh's genus; leaves. The table goes to
+// bench/results/<date>-clouds[-N].md (rewritten after every cloud), skeletons and logs to
+// .deps/bench/runs/<same name>/.
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { parseArgs } from 'node:util';
+import { loadCoreNode, type Core, type Evaluation, type MeshArrays } from '../lib/core/node.ts';
+import { defaultCloudOptions } from '../lib/core/options.ts';
+import type { CloudArrays } from '../lib/core/types.ts';
+import { checkCloud } from '../lib/io/cloud-check.ts';
+import { parseMesh, parseShape } from '../lib/io/index.ts';
+import { parseSkeleton } from '../lib/io/skeleton.ts';
+import { geometricMean, leafIndices, median } from './metrics.ts';
+import { repoRoot, runPinned, shell, venvPython, type Run } from './process.ts';
+import { claimResultName } from './result-name.ts';
+
+const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
+const cloudFolder = path.join(sharedData, 'pointclouds');
+const resultsDir = path.join(repoRoot, 'bench', 'results');
+const METHODS = ['cscd-pc', 'msls-graph', 'cscd-m'] as const;
+type Method = (typeof METHODS)[number];
+
+/** The shared mesh a cloud was sampled from (../shared/data/pointclouds/MANIFEST.md), or null (trees, external clouds). */
+function sourceMesh(cloudFile: string): string | null {
+  const stem = path.basename(cloudFile, '.ply').replace(/_(clean|noise[\d.]+|nonuniform|gel_pts)$/, '');
+  const mesh = path.join(sharedData, 'meshes', `${stem}.ply`);
+  return existsSync(mesh) ? mesh : null;
+}
+
+interface Row {
+  cloud: string;
+  points: number;
+  mesh: string | null;
+  genus: number | null;
+  method: Method;
+  run: Run;
+  nodes: number | null;
+  cycles: number | null;
+  leaves: number | null;
+  againstMesh: number | null;
+  againstCloud: number | null;
+  note: string;
+}
+
+const num = (x: number | null, digits = 3) => (x === null ? '–' : Number(x.toPrecision(digits)).toString());
+
+function score(core: Core, row: Row, mesh: MeshArrays | null, cloud: CloudArrays): void {
+  if (row.run.status !== 'ok') return;
+  try {
+    const skeleton = parseSkeleton(readFileSync(row.run.file), row.run.file);
+    const input = { nodes: skeleton.nodes, edges: skeleton.edges, radii: null };
+    const atCloud: Evaluation = core.evaluateCloud(cloud, input);
+    row.againstCloud = atCloud.reconError;
+    row.nodes = atCloud.nodes;
+    row.cycles = atCloud.cycles;
+    row.leaves = leafIndices(skeleton.nodes.length / 3, skeleton.edges).length;
+    if (mesh) row.againstMesh = core.evaluate(mesh, input).reconError;
+  } catch (error) {
+    row.note = `not scored: ${error instanceof Error ? error.message : String(error)}`;
+  }
+}
+
+function markdown(rows: Row[], machine: string, argv: string[]): string {
+  const lines = [
+    '# Point-cloud bench: CSCD-PC, MSLS on the neighbourhood graph, CSCD-M on the source mesh',
+    '',
+    machine,
+    '',
+    `Options: \`npm run bench:clouds -- ${argv.join(' ')}\`. Every method in its own process pinned to one core, default options `
+      + '(CSCD-PC and CSCD-M: `n = auto`; MSLS: pygel3d\'s `MSLS_skeleton_and_map` on the edges of the cloud\'s neighbourhood graph, '
+      + 'the local-triangulation edges CSCD-PC runs on). Seconds: each runner\'s own wall time of the skeletonisation (reading, checking and '
+      + 'writing excluded; MSLS: building its graph excluded). Error ×1e3, the paper\'s reconstruction error with radii derived by one rule '
+      + 'for every method: against the source mesh (its vertices) and against the cloud (its points).',
+    '',
+    '| cloud | points | source mesh (genus) | method | seconds | nodes | cycles | leaves | error vs mesh ×1e3 | error vs cloud ×1e3 | note |',
+    '| --- | ---: | --- | --- | ---: | ---: | :---: | ---: | ---: | ---: | --- |',
+  ];
+  for (const r of rows) {
+    const seconds = r.run.status === 'ok' ? r.run.seconds!.toFixed(2) : r.run.status;
+    const meshCell = r.mesh ? `${path.basename(r.mesh)} (${r.genus})` : '–';
+    const cycles = r.cycles === null ? '–' : r.genus === null ? String(r.cycles) : `${r.cycles} / ${r.genus}`;
+    lines.push(`| ${r.cloud} | ${r.points} | ${meshCell} | ${r.method} | ${seconds} | ${r.nodes ?? '–'} | ${cycles} | ${r.leaves ?? '–'} | `
+      + `${num(r.againstMesh)} | ${num(r.againstCloud)} | ${r.run.reason || r.note} |`);
+  }
+  const of = (method: Method) => rows.filter((r) => r.method === method);
+  const ratios = (a: Method, b: Method, key: 'againstMesh' | 'seconds') => of(a).flatMap((r) => {
+    const other = of(b).find((o) => o.cloud === r.cloud);
+    const x = key === 'seconds' ? r.run.seconds : r.againstMesh, y = key === 'seconds' ? other?.run.seconds : other?.againstMesh;
+    return x !== null && x !== undefined && y !== null && y !== undefined && y > 0 ? [x / y] : [];
+  });
+  const topology = of('cscd-pc').filter((r) => r.genus !== null && r.cycles !== null);
+  lines.push('', '| summary | value |', '| --- | --- |',
+    `| CSCD-PC clouds with cycles = genus of the source | ${topology.filter((r) => r.cycles === r.genus).length} of ${topology.length} |`,
+    `| MSLS (graph) clouds with cycles = genus of the source | ${of('msls-graph').filter((r) => r.genus !== null && r.cycles === r.genus).length} of ${of('msls-graph').filter((r) => r.genus !== null && r.cycles !== null).length} |`,
+    `| error vs mesh, CSCD-PC / CSCD-M: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'cscd-m', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'cscd-m', 'againstMesh')))}) |`,
+    `| error vs mesh, CSCD-PC / MSLS on the graph: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'msls-graph', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'msls-graph', 'againstMesh')))}) |`,
+    `| seconds, CSCD-PC / CSCD-M: median | ${num(median(ratios('cscd-pc', 'cscd-m', 'seconds')))} |`,
+    `| seconds, CSCD-PC / MSLS on the graph: median | ${num(median(ratios('cscd-pc', 'msls-graph', 'seconds')))} |`);
+  return `${lines.join('\n')}\n`;
+}
+
+async function main(): Promise<void> {
+  const { values } = parseArgs({
+    options: {
+      clouds: { type: 'string' },
+      timeout: { type: 'string', default: '1200' },
+      cpu: { type: 'string', default: '1' },
+      'no-build': { type: 'boolean', default: false },
+    },
+  });
+  const timeout = Number(values.timeout), cpu = Number(values.cpu);
+  const wanted = values.clouds?.split(',').map((c) => c.replace(/\.ply$/, ''));
+  const clouds = readdirSync(cloudFolder).filter((f) => f.endsWith('.ply') && (!wanted || wanted.includes(f.replace(/\.ply$/, '')))).sort();
+  if (!values['no-build']) {
+    const built = spawnSync('bash', ['scripts/build-wasm.sh'], { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
+    if (built.status !== 0) throw new Error('scripts/build-wasm.sh failed');
+  }
+  const bench = spawnSync('bash', ['bench/setup.sh', 'msls'], { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
+  if (bench.status !== 0) throw new Error('bench/setup.sh msls failed');
+
+  mkdirSync(resultsDir, { recursive: true });
+  const name = claimResultName(resultsDir, `${new Date().toISOString().slice(0, 10)}-clouds`, ['md']);
+  const runDir = path.join(repoRoot, '.deps', 'bench', 'runs', name);
+  mkdirSync(runDir, { recursive: true });
+  const pygel = shell(venvPython, ['-c', 'from importlib.metadata import version; print(version("PyGEL3D"))']);
+  const cpuName = /model name\s*:\s*(.*)/.exec(readFileSync('/proc/cpuinfo', 'utf8'))?.[1] ?? 'unknown CPU';
+  const machine = `Run on ${new Date().toISOString().replace(/\.\d+Z$/, 'Z')}, commit ${shell('git', ['rev-parse', '--short', 'HEAD'])}`
+    + `${shell('git', ['status', '--porcelain']) ? ' (with uncommitted changes in the work tree)' : ''}. Machine: ${os.cpus().length} cores, ${cpuName}; `
+    + `Node ${process.version}, pygel3d ${pygel}; load average ${os.loadavg().map((x) => x.toFixed(2)).join(' ')} at the start.`;
+
+  const core = await loadCoreNode();
+  const rows: Row[] = [];
+  const meshRuns = new Map<string, Run>();
+  for (const [i, file] of clouds.entries()) {
+    const cloudPath = path.join(cloudFolder, file);
+    const label = file.replace(/\.ply$/, '');
+    const parsed = parseShape(readFileSync(cloudPath), cloudPath);
+    if (parsed.kind !== 'cloud') continue;
+    const { cloud } = checkCloud(parsed, defaultCloudOptions.neighbours);
+    const meshPath = sourceMesh(file);
+    const mesh = meshPath ? parseMesh(readFileSync(meshPath), meshPath) : null;
+    const genus = mesh ? core.inspect(mesh).genus : null;
+    process.stdout.write(`[${i + 1}/${clouds.length}] ${label} (${cloud.positions.length / 3} points; ${meshPath ? `${path.basename(meshPath)}, genus ${genus}` : 'no source mesh'})\n`);
+
+    const graph = path.join(runDir, `${label}.graph.json`);
+    const cscdFile = path.join(runDir, `${label}.cscd-pc.json`);
+    const runs: [Method, Run][] = [
+      ['cscd-pc', runPinned([process.execPath, '--import', 'tsx', 'bench/runners/cscd-cloud.ts', cloudPath, cscdFile, '--graph', graph], cscdFile, path.join(runDir, `${label}.cscd-pc.log`), timeout, cpu)],
+    ];
+    const mslsFile = path.join(runDir, `${label}.msls-graph.obj`);
+    runs.push(['msls-graph', existsSync(graph)
+      ? runPinned([venvPython, 'bench/runners/gel.py', 'msls', '--graph', graph, mslsFile], mslsFile, path.join(runDir, `${label}.msls-graph.log`), timeout, cpu)
+      : { status: 'failed', seconds: null, reason: 'no neighbourhood graph (CSCD-PC failed)', file: mslsFile }]);
+    if (meshPath) {
+      const meshLabel = path.basename(meshPath, '.ply');
+      const meshFile = path.join(runDir, `${meshLabel}.cscd-m.json`);
+      if (!meshRuns.has(meshPath)) {
+        meshRuns.set(meshPath, runPinned([process.execPath, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, meshFile], meshFile, path.join(runDir, `${meshLabel}.cscd-m.log`), timeout, cpu));
+      }
+      runs.push(['cscd-m', meshRuns.get(meshPath)!]);
+    }
+    for (const [method, run] of runs) {
+      const row: Row = { cloud: label, points: cloud.positions.length / 3, mesh: meshPath, genus, method, run, nodes: null, cycles: null, leaves: null, againstMesh: null, againstCloud: null, note: '' };
+      score(core, row, mesh, cloud);
+      rows.push(row);
+      process.stdout.write(`  ${method.padEnd(10)} ${run.status === 'ok' ? `${run.seconds!.toFixed(1)} s, ${row.cycles} cycles, error vs mesh ${num(row.againstMesh)}, vs cloud ${num(row.againstCloud)}` : `${run.status} ${run.reason}`}\n`);
+    }
+    writeFileSync(path.join(resultsDir, `${name}.md`), markdown(rows, machine, process.argv.slice(2)));
+  }
+  process.stdout.write(`bench:clouds: done; ${path.relative(repoRoot, path.join(resultsDir, name))}.md\n`);
+}
+
+main().catch((error: unknown) => {
+  process.stderr.write(`bench:clouds: ${error instanceof Error ? error.message : String(error)}\n`);
+  process.exit(1);
+});

@@ -39,7 +39,7 @@ function shortening(file: string) {
   try {
     const points = cloud.facts.points;
     const next = random(Number(values.seed));
-    let total = 0, steps = 0, count = 0;
+    let total = 0, cpu = 0, steps = 0, count = 0;
     const lengths: string[] = [];
     for (let k = 0; k < Number(values.sources); k++) {
       const source = Math.floor(next() * points);
@@ -52,15 +52,17 @@ function shortening(file: string) {
       for (let i = 0; i < loop.length; i += 3)
         radius = Math.max(radius, Math.hypot(loop[i] - centre[0], loop[i + 1] - centre[1], loop[i + 2] - centre[2]));
       if (k === 0) cloud.shortenLoop(loop, { sphere: { center: centre, radius } }); // warm-up
-      const started = performance.now();
+      const started = performance.now(), startedCpu = process.cpuUsage();
       const shortened = cloud.shortenLoop(loop, { sphere: { center: centre, radius } });
       total += performance.now() - started;
+      const used = process.cpuUsage(startedCpu);
+      cpu += (used.user + used.system) / 1000;
       steps += shortened.iterations;
       count++;
       lengths.push(shortened.status === 'ok' ? shortened.length.toFixed(2) : shortened.status);
     }
     process.stdout.write(
-      `| ${path.basename(file)} | ${count} | ${(total / count).toFixed(1)} | ${(steps / count).toFixed(1)} | ${lengths.join(' ')} |\n`,
+      `| ${path.basename(file)} | ${count} | ${(total / count).toFixed(1)} | ${(cpu / count).toFixed(1)} | ${(steps / count).toFixed(1)} | ${lengths.join(' ')} |\n`,
     );
   } finally {
     cloud.dispose();
@@ -90,6 +92,6 @@ if (values.skeletons) {
   process.stdout.write(`| cloud | cycles | error (x1e3) | seconds |\n| --- | ---: | ---: | ---: |\n`);
   for (const file of positionals) skeleton(file);
 } else {
-  process.stdout.write(`| cloud | loops | shortening, ms per loop | steps per loop | lengths |\n| --- | ---: | ---: | ---: | --- |\n`);
+  process.stdout.write(`| cloud | loops | shortening, ms per loop | CPU ms per loop | steps per loop | lengths |\n| --- | ---: | ---: | ---: | ---: | --- |\n`);
   for (const file of positionals) shortening(file);
 }

@@ -112,7 +112,7 @@ MlsPoint MlsSurface::project(Vector3 query, MlsNeighbourCache* cache) const {
         const Vector3 d = points[near[j]] - centroid;
         local[j] = monomials(dot(d, e1) / h, dot(d, e2) / h);
         heights[j] = dot(d, normal);
-        system += weights[j] * local[j] * local[j].transpose();
+        system.selfadjointView<Eigen::Lower>().rankUpdate(local[j], weights[j]); // LDLT reads the lower half
         rhs += weights[j] * heights[j] * local[j];
       }
       const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(system);

@@ -27,7 +27,12 @@ constexpr double kMaxMove = 0.5;
 constexpr double kFarthestPreimage = 0.25;
 constexpr double kShortest = 0.5, kLongest = 1.5; // a segment outside these lengths resamples the loop
 constexpr size_t kMinPoints = 6;
-constexpr double kSettledMove = 1e-3; // converged when no point moves farther in a step
+// Converged when no point moves farther than kSettledMove across the loop in a step, or when a full step
+// lowers the energy by less than kSettledDecrease: a Newton decrement (the step is preconditioned by a bound
+// on the Hessian), about 2e-5 spacing of length (H'(1) = 2e per spacing), where a loop on a flat stretch of
+// the energy (one on bob) would otherwise creep on for 150 steps at a constant length.
+constexpr double kSettledMove = 1e-3;
+constexpr double kSettledDecrease = 1e-4;
 constexpr int kMaxIterations = 5000;
 // A loop shorter than this encloses nothing the cloud resolves: a tube that thin has under one spacing
 // of radius, and the mesh prunes loops shorter than 3 mean edge lengths by default (pruneLengthFactor).
@@ -156,6 +161,19 @@ struct LoopEnergy {
     return direction;
   }
 };
+
+// The largest move of a point across the loop: sliding along it moves the points, not the curve (a loop
+// at its shortest creeps along itself at a few thousandths of a spacing per step as its spacings even out).
+double largestMoveAcross(const Polyline& x, const std::vector<MlsPoint>& next) {
+  const size_t n = x.size();
+  double largest = 0;
+  for (size_t i = 0; i < n; i++) {
+    const Vector3 along = (x[(i + 1) % n] - x[(i + n - 1) % n]).normalize();
+    const Vector3 move = next[i].position - x[i];
+    largest = std::max(largest, norm(move - dot(move, along) * along));
+  }
+  return largest;
+}
 
 bool farFromLoop(const Polyline& y, const Polyline& x, double spacing) {
   for (size_t i = 0; i < x.size(); i++)
@@ -316,7 +334,9 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
     std::vector<MlsPoint> next;
     double after = INFINITY;
     int halvings = 0;
+    bool full = false; // the step as preconditioned, neither shortened to kMaxMove nor halved
     for (;; halvings++) {
+      full = step >= 1 && longest <= kMaxMove;
       step = std::min(step, kMaxMove / longest);
       trial.resize(x.size());
       for (size_t i = 0; i < x.size(); i++) trial[i] = y[i] + step * spacing * direction[i];
@@ -329,9 +349,7 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
     if (!(after < before)) break;
     // A step that had to be halved is kept: doubling it back would fail again and cost a projection.
     if (halvings == 0) step = std::min(1., 2 * step);
-    double largestMove = 0;
-    for (size_t i = 0; i < x.size(); i++) largestMove = std::max(largestMove, norm(next[i].position - x[i]) / spacing);
-    settled = largestMove < kSettledMove;
+    settled = largestMoveAcross(x, next) < kSettledMove * spacing || (full && before - after < kSettledDecrease);
     y = trial;
     loop = std::move(next);
     x = positionsOf(loop);

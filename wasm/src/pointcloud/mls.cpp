@@ -26,6 +26,9 @@ const double kFarthestWeight = std::exp(-4.);
 // settles", so that nearby queries get nearby answers (the loop's descent compares energies of nearby
 // projections; on a noisy cloud the rounds need not settle, and how many ran would make answers jump).
 constexpr int kRounds = 3;
+// A neighbour cache holds this many times k candidates: about 1.4 times the k-th neighbour's distance on a
+// surface, so a query can move about 0.4 of that (over a spacing at k = 30) before it is refilled.
+constexpr size_t kCandidateFactor = 2;
 
 Eigen::Vector3d toEigen(Vector3 v) { return {v.x, v.y, v.z}; }
 Vector3 fromEigen(const Eigen::Vector3d& v) { return Vector3{v.x(), v.y(), v.z()}; }
@@ -35,13 +38,35 @@ Vector3 fromEigen(const Eigen::Vector3d& v) { return Vector3{v.x(), v.y(), v.z()
 MlsSurface::MlsSurface(std::vector<Vector3> points_, size_t neighbours_)
     : points(std::move(points_)), neighbours(neighbours_), finder(std::make_unique<NearestNeighborFinder>(points)) {}
 
-MlsPoint MlsSurface::project(Vector3 query) const {
+std::vector<size_t> MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache) const {
+  if (!cache) return finder->kNearest(at, k);
+  if (cache->reach >= 0) {
+    std::vector<std::pair<double, size_t>> byDistance;
+    byDistance.reserve(cache->candidates.size());
+    for (size_t i : cache->candidates) byDistance.push_back({norm2(points[i] - at), i});
+    std::partial_sort(byDistance.begin(), byDistance.begin() + k, byDistance.end());
+    if (std::sqrt(byDistance[k - 1].first) + norm(at - cache->centre) < cache->reach) {
+      std::vector<size_t> near(k);
+      for (size_t j = 0; j < k; j++) near[j] = byDistance[j].second;
+      return near;
+    }
+  }
+  const size_t count = std::min(kCandidateFactor * k, points.size());
+  cache->centre = at;
+  cache->candidates = finder->kNearest(at, count);
+  // Every point left out is at least as far as the farthest candidate; all of them are in when count is every point.
+  cache->reach = count == points.size() ? INFINITY : norm(points[cache->candidates.back()] - at);
+  return std::vector<size_t>(cache->candidates.begin(), cache->candidates.begin() + k);
+}
+
+MlsPoint MlsSurface::project(Vector3 query, MlsNeighbourCache* cache) const {
   MlsPoint result{query, Vector3{0, 0, 1}, false};
   Vector3 at = query;
   const size_t k = std::min(neighbours, points.size());
-  std::vector<double> weights(k);
+  std::vector<double> weights(k), heights(k); // heights over the plane
+  std::vector<Eigen::Matrix<double, 6, 1>> local(k); // the quadratic's monomials at each neighbour
   for (int round = 0; round < kRounds; round++) {
-    const std::vector<size_t> near = finder->kNearest(at, k);
+    const std::vector<size_t> near = kNearest(at, k, cache);
     double farthest2 = 0;
     for (size_t i : near) farthest2 = std::max(farthest2, norm2(points[i] - at));
     const double h = std::sqrt(farthest2) / 2;
@@ -85,19 +110,19 @@ MlsPoint MlsSurface::project(Vector3 query) const {
       Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
       for (size_t j = 0; j < near.size(); j++) {
         const Vector3 d = points[near[j]] - centroid;
-        const Eigen::Matrix<double, 6, 1> m = monomials(dot(d, e1) / h, dot(d, e2) / h);
-        system += weights[j] * m * m.transpose();
-        rhs += weights[j] * dot(d, normal) * m;
+        local[j] = monomials(dot(d, e1) / h, dot(d, e2) / h);
+        heights[j] = dot(d, normal);
+        system.selfadjointView<Eigen::Lower>().rankUpdate(local[j], weights[j]); // LDLT reads the lower half
+        rhs += weights[j] * heights[j] * local[j];
       }
       const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(system);
       if (solver.info() == Eigen::Success && solver.rcond() > kQuadraticMinRcond) {
         const Eigen::Matrix<double, 6, 1> a = solver.solve(rhs);
         double planeResidual = 0, quadraticResidual = 0; // weighted sums of squares
         for (size_t j = 0; j < near.size(); j++) {
-          const Vector3 d = points[near[j]] - centroid;
-          const double f = dot(d, normal);
+          const double f = heights[j], r = f - a.dot(local[j]);
           planeResidual += weights[j] * f * f;
-          quadraticResidual += weights[j] * std::pow(f - a.dot(monomials(dot(d, e1) / h, dot(d, e2) / h)), 2);
+          quadraticResidual += weights[j] * r * r;
         }
         const double height = a.dot(monomials(uq, vq));
         const double ratio = kQuadraticMaxResidualRatio;

@@ -24,16 +24,30 @@ struct MlsPoint {
 // frame, and a weighted quadratic height over that plane refines it where the cloud is clean and the
 // fit well posed. The query is projected on that surface, and the weights re-centred at the result for
 // two more rounds, so that the answer hardly depends on how far off the surface the query was.
+// Candidates for the k nearest points of queries near one place (a point of a loop being shortened, which
+// moves a little per step): the cloud's points nearest to `centre`, every point within `reach` of it among
+// them. A query q whose k-th nearest candidate lies within reach - |q - centre| has its k nearest points
+// among them, so they are found without the kd-tree, and exactly as it would find them.
+struct MlsNeighbourCache {
+  geometrycentral::Vector3 centre{0, 0, 0};
+  double reach = -1; // none yet
+  std::vector<size_t> candidates;
+};
+
 class MlsSurface {
 public:
   MlsSurface(std::vector<geometrycentral::Vector3> points, size_t neighbours);
 
-  MlsPoint project(geometrycentral::Vector3 query) const;
+  // With a cache, the k nearest points come from it while it holds them, and it is refilled when not.
+  MlsPoint project(geometrycentral::Vector3 query, MlsNeighbourCache* cache = nullptr) const;
 
   // The index of the cloud point nearest to `query`.
   size_t nearestPoint(geometrycentral::Vector3 query) const;
 
 private:
+  // The k nearest points of `at`, the nearest first.
+  std::vector<size_t> kNearest(geometrycentral::Vector3 at, size_t k, MlsNeighbourCache* cache) const;
+
   std::vector<geometrycentral::Vector3> points;
   size_t neighbours;
   // Its queries are not const, though they change nothing we can see.

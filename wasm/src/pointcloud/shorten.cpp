@@ -21,9 +21,18 @@ constexpr double kPenaltyWeight = 10; // lambda of the paper's sphere penalty
 // keeps the MLS projection local; a step is halved while the energy does not decrease.
 constexpr int kMaxHalvings = 10;
 constexpr double kMaxMove = 0.5;
+// The steps move pre-images of the loop's points (shortenLoop); one farther than this from its point starts
+// again on the loop (they stay about as far from the surface as the first chords were, unless tangent
+// steps around a bend take them farther).
+constexpr double kFarthestPreimage = 0.25;
 constexpr double kShortest = 0.5, kLongest = 1.5; // a segment outside these lengths resamples the loop
 constexpr size_t kMinPoints = 6;
-constexpr double kSettledMove = 1e-3; // converged when no point moves farther in a step
+// Converged when no point moves farther than kSettledMove across the loop in a step, or when a full step
+// lowers the energy by less than kSettledDecrease: a Newton decrement (the step is preconditioned by a bound
+// on the Hessian), about 2e-5 spacing of length (H'(1) = 2e per spacing), where a loop on a flat stretch of
+// the energy (one on bob) would otherwise creep on for 150 steps at a constant length.
+constexpr double kSettledMove = 1e-3;
+constexpr double kSettledDecrease = 1e-4;
 constexpr int kMaxIterations = 5000;
 // A loop shorter than this encloses nothing the cloud resolves: a tube that thin has under one spacing
 // of radius, and the mesh prunes loops shorter than 3 mean edge lengths by default (pruneLengthFactor).
@@ -37,10 +46,15 @@ double loopLength(const Polyline& loop) {
   return length;
 }
 
-std::vector<MlsPoint> projected(const MlsSurface& mls, const Polyline& points) {
+// Each point of the loop keeps its candidate neighbours between steps (it moves at most kMaxMove per
+// step): the projections are those without the caches, found without most of the kd-tree queries.
+using NeighbourCaches = std::vector<MlsNeighbourCache>;
+
+std::vector<MlsPoint> projected(const MlsSurface& mls, const Polyline& points, NeighbourCaches& caches) {
+  caches.resize(points.size());
   std::vector<MlsPoint> result;
   result.reserve(points.size());
-  for (const Vector3& p : points) result.push_back(mls.project(p));
+  for (size_t i = 0; i < points.size(); i++) result.push_back(mls.project(points[i], &caches[i]));
   return result;
 }
 
@@ -51,8 +65,8 @@ Polyline positionsOf(const std::vector<MlsPoint>& points) {
   return result;
 }
 
-// The closed polyline resampled at equal arc lengths, about one spacing apart, then projected on the surface.
-std::vector<MlsPoint> resampled(const MlsSurface& mls, const Polyline& loop, double spacing) {
+// The closed polyline resampled at equal arc lengths, about one spacing apart (to be projected on the surface).
+Polyline resampled(const Polyline& loop, double spacing) {
   const double length = loopLength(loop);
   const size_t count = std::max(kMinPoints, size_t(std::lround(length / spacing)));
   Polyline points;
@@ -70,7 +84,7 @@ std::vector<MlsPoint> resampled(const MlsSurface& mls, const Polyline& loop, dou
     const double t = segmentLength > 0 ? std::clamp((at - start) / segmentLength, 0., 1.) : 0;
     points.push_back((1 - t) * loop[segment] + t * loop[(segment + 1) % loop.size()]);
   }
-  return projected(mls, points);
+  return points;
 }
 
 // The energy of the paper with the loop measured in spacings: sum H(s_i) + lambda sum max(0, d_i - r)^2.
@@ -148,6 +162,25 @@ struct LoopEnergy {
   }
 };
 
+// The largest move of a point across the loop: sliding along it moves the points, not the curve (a loop
+// at its shortest creeps along itself at a few thousandths of a spacing per step as its spacings even out).
+double largestMoveAcross(const Polyline& x, const std::vector<MlsPoint>& next) {
+  const size_t n = x.size();
+  double largest = 0;
+  for (size_t i = 0; i < n; i++) {
+    const Vector3 along = (x[(i + 1) % n] - x[(i + n - 1) % n]).normalize();
+    const Vector3 move = next[i].position - x[i];
+    largest = std::max(largest, norm(move - dot(move, along) * along));
+  }
+  return largest;
+}
+
+bool farFromLoop(const Polyline& y, const Polyline& x, double spacing) {
+  for (size_t i = 0; i < x.size(); i++)
+    if (norm(y[i] - x[i]) > kFarthestPreimage * spacing) return true;
+  return false;
+}
+
 bool needsResampling(const Polyline& loop, double spacing) {
   for (size_t i = 0; i < loop.size(); i++) {
     const double s = norm(loop[(i + 1) % loop.size()] - loop[i]) / spacing;
@@ -176,10 +209,19 @@ std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop,
     across[i] = cross(along, normals[i] + toward(normals[(i + 1) % n], normals[i]));
   }
 
+  // Only points in the region are measured: with a sphere, none farther from its centre than the loop's
+  // farthest point and a spacing (every point of the loop is within that less a spacing).
+  double regionReach = INFINITY;
+  if (sphere) {
+    regionReach = sphere->radius;
+    for (const MlsPoint& p : loop) regionReach = std::max(regionReach, norm(p.position - sphere->center));
+    regionReach += spacing;
+  }
   std::vector<char> inRegion(pointCount, 0), positiveSide(pointCount, 0);
   std::vector<double> distance(pointCount, INFINITY);
   for (size_t p = 0; p < pointCount; p++) {
     const Vector3 x = positions[p];
+    if (sphere && norm(x - sphere->center) > regionReach) continue;
     size_t nearest = 0;
     Vector3 foot = loop[0].position;
     for (size_t i = 0; i < n; i++) {
@@ -272,7 +314,12 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
   const double spacing = cloud.facts().meanSpacing;
   const MlsSurface& mls = cloud.mls();
   const LoopEnergy energy{spacing, sphere};
-  std::vector<MlsPoint> loop = resampled(mls, positionsOf(projected(mls, polyline)), spacing);
+  NeighbourCaches caches;
+  // The loop is the projection of its pre-images `y`, which the steps move: a step of length t then moves
+  // the loop continuously from where it is, however noisy the cloud (projecting the projected loop again,
+  // as each step once did, moves it a little there), and each step projects the loop once, not twice.
+  Polyline y = resampled(positionsOf(projected(mls, polyline, caches)), spacing);
+  std::vector<MlsPoint> loop = projected(mls, y, caches);
   Polyline x = positionsOf(loop);
   if (recordEvery > 0) result.iterates.push_back(x);
 
@@ -280,36 +327,40 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
   double step = 1;
   bool settled = false;
   while (!settled && loopLength(x) >= kDegenerateLength * spacing && result.iterations < kMaxIterations) {
-    // Projecting a projected point moves it a little on a noisy cloud: the energy of a step is compared
-    // with that of the loop projected again, so that a short enough step always lowers it.
-    loop = projected(mls, x);
-    x = positionsOf(loop);
     const double before = energy.value(x);
     Polyline direction = energy.descent(x, loop);
     double longest = 0;
     for (const Vector3& d : direction) longest = std::max(longest, norm(d));
-    if (longest > kMaxMove)
-      for (Vector3& d : direction) d *= kMaxMove / longest;
     std::vector<MlsPoint> next;
     double after = INFINITY;
-    for (int halving = 0;; halving++) {
+    int halvings = 0;
+    bool full = false; // the step as preconditioned, neither shortened to kMaxMove nor halved
+    for (;; halvings++) {
+      full = step >= 1 && longest <= kMaxMove;
+      step = std::min(step, kMaxMove / longest);
       trial.resize(x.size());
-      for (size_t i = 0; i < x.size(); i++) trial[i] = x[i] + step * spacing * direction[i];
-      next = projected(mls, trial);
+      for (size_t i = 0; i < x.size(); i++) trial[i] = y[i] + step * spacing * direction[i];
+      next = projected(mls, trial, caches);
       after = energy.value(positionsOf(next));
-      if (after < before || halving == kMaxHalvings) break;
+      if (after < before || halvings == kMaxHalvings) break;
       step /= 2;
     }
     // No step lowers the energy: the loop is at a minimum, up to how well the MLS surface is known.
     if (!(after < before)) break;
-    step = std::min(1., 2 * step);
-    double largestMove = 0;
-    for (size_t i = 0; i < x.size(); i++) largestMove = std::max(largestMove, norm(next[i].position - x[i]) / spacing);
-    settled = largestMove < kSettledMove;
+    // A step that had to be halved is kept: doubling it back would fail again and cost a projection.
+    if (halvings == 0) step = std::min(1., 2 * step);
+    settled = largestMoveAcross(x, next) < kSettledMove * spacing || (full && before - after < kSettledDecrease);
+    y = trial;
     loop = std::move(next);
     x = positionsOf(loop);
     if (needsResampling(x, spacing)) {
-      loop = resampled(mls, x, spacing);
+      y = resampled(x, spacing);
+      loop = projected(mls, y, caches);
+      x = positionsOf(loop);
+    } else if (farFromLoop(y, x, spacing)) {
+      // Tangent steps on a curved surface take the pre-images away from it: they start again on the loop.
+      y = x;
+      loop = projected(mls, y, caches);
       x = positionsOf(loop);
     }
     result.iterations++;

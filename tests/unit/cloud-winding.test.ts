@@ -7,7 +7,7 @@ import path from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core } from '../../lib/core/node.ts';
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
-import { fixture } from '../paths.ts';
+import { fixture, sharedData } from '../paths.ts';
 import { spherePoints } from './support/clouds.ts';
 
 function readCloud(file: string): ParsedCloud {
@@ -51,6 +51,20 @@ describe('winding numbers of a point cloud', () => {
       expect(share(outwards, false)).toBeGreaterThan(0.97);
       const far = cloud.windingNumbers(Float64Array.from([10, 10, 10]).map((x) => x * cloud.facts.bboxDiagonal));
       expect(Math.abs(far[0])).toBeLessThan(0.01);
+    } finally {
+      cloud.dispose();
+    }
+  });
+
+  it('orients horse_clean outwards, whose topmost point lies on a thin feature', () => {
+    // The first rule (the topmost point's normal points up) turned this cloud inside out.
+    const horse = readCloud(path.join(sharedData, 'pointclouds', 'horse_clean.ply'));
+    const cloud = core.openCloud({ positions: horse.positions, normals: null });
+    try {
+      const offset = 0.005 * cloud.facts.bboxDiagonal;
+      const along = (sign: number) => horse.positions.map((x, i) => x + sign * offset * horse.normals![i]);
+      expect(share(cloud.windingNumbers(along(-1)), true)).toBeGreaterThan(0.95);
+      expect(share(cloud.windingNumbers(along(1)), false)).toBeGreaterThan(0.95);
     } finally {
       cloud.dispose();
     }

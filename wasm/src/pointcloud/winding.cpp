@@ -22,10 +22,11 @@ PointWinding::PointWinding(Cloud& cloud) {
     normal[p] = geometry.normals[p];
   }
 
-  // Prim's tree from the topmost unvisited point, whose outward normal points up; each point takes
-  // the orientation of the tree neighbour it is reached from. Ties in the weight go to the lower index,
-  // so the orientation is the same on every run.
+  // Prim's tree from the topmost unvisited point; each point takes the orientation of the tree
+  // neighbour it is reached from. Ties in the weight go to the lower index, so the orientation is the
+  // same on every run. Each tree's sign is then chosen by its enclosed volume (below).
   std::vector<char> oriented(n, 0);
+  std::vector<size_t> tree;
   using Entry = std::pair<double, std::pair<size_t, size_t>>; // weight, (point, from)
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
   auto reach = [&](size_t p) {
@@ -38,7 +39,7 @@ PointWinding::PointWinding(Cloud& cloud) {
     size_t top = SIZE_MAX;
     for (size_t p = 0; p < n; p++)
       if (!oriented[p] && (top == SIZE_MAX || position[p].z > position[top].z)) top = p;
-    if (normal[top].z < 0) normal[top] = -normal[top];
+    tree.assign(1, top);
     oriented[top] = 1;
     left--;
     reach(top);
@@ -49,9 +50,19 @@ PointWinding::PointWinding(Cloud& cloud) {
       if (oriented[p]) continue;
       if (dot(normal[p], normal[from]) < 0) normal[p] = -normal[p];
       oriented[p] = 1;
+      tree.push_back(p);
       left--;
       reach(p);
     }
+    // Outward normals enclose a positive volume: sum a_i n_i . (x_i - c) = 3 V by the divergence
+    // theorem. The topmost point's own normal (PCA on the tip of an ear lies nearly flat) was not
+    // reliable enough: it turned the whole horse_clean cloud inside out.
+    Vector3 centre{0, 0, 0};
+    for (size_t p : tree) centre += position[p] / double(tree.size());
+    double volume = 0;
+    for (size_t p : tree) volume += area[p] * dot(normal[p], position[p] - centre);
+    if (volume < 0)
+      for (size_t p : tree) normal[p] = -normal[p];
   }
 }
 

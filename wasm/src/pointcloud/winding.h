@@ -13,8 +13,8 @@ namespace cscd {
 //
 // It needs normals of one orientation, which neither PCA nor every scan gives: they are oriented by
 // propagation along a minimum spanning tree of the neighbour graph weighted by 1 - |n_i . n_j| (Hoppe et
-// al. 1992), from the topmost point of each component, whose outward normal points up. Areas: the
-// cloud's point areas.
+// al. 1992), each tree's sign chosen so that its normals enclose a positive volume (sum a_i n_i . x_i =
+// 3 V, divergence theorem). Areas: the cloud's point areas.
 class PointWinding {
 public:
   explicit PointWinding(Cloud& cloud);

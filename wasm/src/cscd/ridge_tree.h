@@ -1,5 +1,7 @@
 #pragma once
 
+#include "cscd/options.h"
+
 #include <array>
 #include <cstddef>
 #include <limits>
@@ -35,6 +37,15 @@ struct CutLocusOptions {
   // ones the thresholds look at.
   bool everyAngle = true;
 };
+
+// The cut-locus thresholds of the run's options (the teaching-only everyAngle left to the caller).
+inline CutLocusOptions cutLocusOptionsOf(const Options& options) {
+  CutLocusOptions cutLocus;
+  cutLocus.angleThreshold = options.angleThreshold;
+  cutLocus.laplacianThreshold = options.laplacianThreshold;
+  cutLocus.pruneDepth = options.pruneDepth;
+  return cutLocus;
+}
 
 // The cut locus of one source as a graph on the shape's vertices (mesh vertices or cloud points).
 struct CutLocus {

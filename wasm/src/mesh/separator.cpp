@@ -142,10 +142,7 @@ SeparatorResult computeSeparator(Surface& surface, size_t source, const Options&
   clock.lap("distance");
 
   const CutLocusSolver& cutLocusSolver = surface.cutLocusSolver();
-  CutLocusOptions cutLocusOptions;
-  cutLocusOptions.angleThreshold = options.angleThreshold;
-  cutLocusOptions.laplacianThreshold = options.laplacianThreshold;
-  cutLocusOptions.pruneDepth = options.pruneDepth;
+  CutLocusOptions cutLocusOptions = cutLocusOptionsOf(options);
   cutLocusOptions.everyAngle = everyAngle;
   result.cutLocus = cutLocusSolver.compute(result.distance, source, cutLocusOptions);
   clock.lap("cutLocus");

@@ -31,12 +31,8 @@ CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, co
   result.distance = cloud.geodesics().fromPoint(source);
   clock.lap("distance");
 
-  CutLocusOptions cutLocusOptions;
-  cutLocusOptions.angleThreshold = options.angleThreshold;
-  cutLocusOptions.laplacianThreshold = options.laplacianThreshold;
-  cutLocusOptions.pruneDepth = options.pruneDepth;
   const CloudCutLocusSolver& solver = cloud.cutLocusSolver();
-  result.cutLocus = solver.compute(result.distance, source, cutLocusOptions);
+  result.cutLocus = solver.compute(result.distance, source, cutLocusOptionsOf(options));
   clock.lap("cutLocus");
 
   const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();

@@ -8,7 +8,7 @@ using namespace geometrycentral::pointcloud;
 
 namespace cscd {
 
-PointWinding::PointWinding(Cloud& cloud) {
+PointWinding::PointWinding(Cloud& cloud) : area(cloud.pointAreas()) {
   PointPositionGeometry& geometry = cloud.geometry();
   geometry.requireNeighbors();
   geometry.requireNormals();
@@ -16,7 +16,6 @@ PointWinding::PointWinding(Cloud& cloud) {
   const PointData<std::vector<Point>>& neighbours = geometry.neighbors->neighbors;
   position.resize(n);
   normal.resize(n);
-  area = cloud.pointAreas();
   for (size_t p = 0; p < n; p++) {
     position[p] = geometry.positions[p];
     normal[p] = geometry.normals[p];

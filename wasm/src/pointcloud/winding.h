@@ -27,7 +27,7 @@ public:
 private:
   std::vector<geometrycentral::Vector3> position;
   std::vector<geometrycentral::Vector3> normal;
-  std::vector<double> area;
+  const std::vector<double>& area; // the cloud's point areas
 };
 
 } // namespace cscd

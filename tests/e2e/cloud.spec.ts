@@ -82,11 +82,11 @@ test('a cloud above the point limit is computed on a subsample, said in the note
 });
 
 test('a run on a cloud streams its candidate loops and can be cancelled', async ({ page }) => {
-  await openPage(page, '/#n=400');
+  await openPage(page, '/#n=2000');
   await page.getByTestId('file-input').setInputFiles({ name: 'bob_subsample.ply', mimeType: 'application/octet-stream', buffer: readFileSync(fixture('clouds', 'bob_subsample.ply')) });
   await expect(page.getByTestId('facts-vertices')).toHaveText('1948 points', { timeout: 30_000 });
   await enterStage(page, 'separators');
-  await expect(page.getByTestId('sk-progress')).toHaveAttribute('data-total', '400');
+  await expect(page.getByTestId('sk-progress')).toHaveAttribute('data-total', '2000');
   await expect.poll(async () => Number(await page.getByTestId('sk-progress').getAttribute('data-done')), { timeout: 30_000 }).toBeGreaterThan(0);
   await expect(layerBox(page, 'sk-progress')).toBeVisible();
   await page.getByTestId('sk-cancel').click();

@@ -49,7 +49,7 @@ test('the saved skeleton is the same, byte for byte, on 1, 2 and 3 workers', asy
 
 test('a cancel during stage 1 stops every worker; the next run finishes on a new pool', async ({ page }) => {
   test.slow();
-  await openPage(page, '/#n=400&roundSize=4&workers=2');
+  await openPage(page, '/#n=3000&roundSize=4&workers=2');
   const started: { script: string; closed: boolean }[] = [];
   page.on('worker', (worker) => {
     const seen = { script: /assets\/([a-z-]+)-/.exec(worker.url())?.[1] ?? worker.url(), closed: false };
@@ -63,7 +63,7 @@ test('a cancel during stage 1 stops every worker; the next run finishes on a new
   await expect(body(page)).toHaveAttribute('data-sk-run', 'cancelled', { timeout: 10_000 });
   await waitForState(page, 'ready');
   await expect(page.getByTestId('error')).toBeHidden();
-  expect(Number(await page.getByTestId('sk-progress').getAttribute('data-done'))).toBeLessThan(400);
+  expect(Number(await page.getByTestId('sk-progress').getAttribute('data-done'))).toBeLessThan(3000);
   // The separator workers are stopped; the geometry worker stopped the run itself (the page did not have to replace it).
   await expect.poll(() => started).toEqual([{ script: 'separator-worker', closed: true }, { script: 'separator-worker', closed: true }]);
 

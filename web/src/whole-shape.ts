@@ -152,6 +152,8 @@ export class WholeShape {
       const reply = await job.result;
       if (id !== this.jobId) return;
       if (this.cancelRequested) throw new WorkerError('cancelled', 'The computation was cancelled.');
+      // Nothing is left to stop: a Cancel pressed while the result is drawn would be a no-op.
+      this.panel.drawing();
       if (!(await this.showResult(reply, id))) return;
     } catch (error) {
       if (id !== this.jobId) return;

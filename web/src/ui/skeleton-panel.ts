@@ -74,6 +74,12 @@ export class SkeletonPanel {
     this.progress.classList.remove('indeterminate');
   }
 
+  /** The reply is in and its layers are being built: Cancel has nothing left to stop. */
+  drawing(): void {
+    this.cancel.disabled = true;
+    byTestId('sk-progress-phase').textContent = 'drawing the skeleton…';
+  }
+
   /** Disables Cancel once pressed (the worker stops between two steps). */
   cancelling(): void {
     this.cancel.disabled = true;

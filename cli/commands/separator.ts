@@ -1,5 +1,6 @@
 import { writeFile } from 'node:fs/promises';
 import {
+  CLOUD_OPTIONS,
   cliFlag,
   defaultCloudOptions,
   defaultOptions,
@@ -97,7 +98,7 @@ export function optionsFromFlags(values: OptionValues): Options {
 
 /** The full CloudOptions of a command line on a point cloud: defaults, overridden by the flags that were given. */
 export function cloudOptionsFromFlags(values: OptionValues): CloudOptions {
-  return valuesFromFlags(OPTIONS, defaultCloudOptions, values) as unknown as CloudOptions;
+  return valuesFromFlags(CLOUD_OPTIONS, defaultCloudOptions, values) as unknown as CloudOptions;
 }
 
 /** The run settings' flags (`--workers`), for the commands that can run stage 1 on a pool. */

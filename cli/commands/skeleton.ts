@@ -5,7 +5,7 @@ import { openNodeCloudPool, openNodePool, type NodePool } from '../../lib/core/n
 import { AUTO_N, type RunSettings } from '../../lib/core/options.ts';
 import { runStage1 } from '../../lib/core/pool.ts';
 import { CLOUD_VERTICES_PER_POINT, poolSize } from '../../lib/core/pool-size.ts';
-import type { CloudOptions, Options, Pipeline, PipelineProgress, Skeleton } from '../../lib/core/types.ts';
+import type { CloudOptions, Options, Pipeline, PipelineProgress, ShapeOptions, Skeleton } from '../../lib/core/types.ts';
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
 import {
   UsageError, decimateIfAsked, decimateOption, openCloud, openSolver, readShape, refuseFlags,
@@ -18,7 +18,7 @@ import { cloudFlagSpecs, cloudOptionsFromFlags, optionFlagSpecs, optionsFromFlag
  * `vertices`: of the mesh as read (refinement only touches coarse meshes, which are small), or a
  * cloud's points in mesh vertices of the same memory.
  */
-function threadsFor(settings: RunSettings, options: Options, vertices: number): number {
+function threadsFor(settings: RunSettings, options: ShapeOptions, vertices: number): number {
   return poolSize({
     workers: settings.workers,
     cores: os.availableParallelism(),
@@ -92,10 +92,10 @@ export const skeleton: Command = {
     const progress = new ProgressLine(io.stderr);
     const started = performance.now();
     let result: Skeleton;
-    let options: Options;
+    let options: ShapeOptions;
     try {
       if (shape.kind === 'cloud') {
-        refuseFlags(values, ['decimate'], file, 'point cloud');
+        refuseFlags(values, ['decimate', 'stage1-vertices'], file, 'point cloud');
         options = cloudOptions;
         result = await cloudSkeleton(shape, cloudOptions, settings, file, io, progress);
       } else {
@@ -126,7 +126,7 @@ export const skeleton: Command = {
 };
 
 /** Stage 1 with its progress line, then stage 2. */
-async function runPipeline(pipeline: Pipeline, workers: Parameters<typeof runStage1>[1], options: Options, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {
+async function runPipeline(pipeline: Pipeline, workers: Parameters<typeof runStage1>[1], options: ShapeOptions, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {
   const name = path.basename(file);
   const tty = io.stderr.isTTY === true;
   try {
@@ -157,8 +157,8 @@ async function cloudSkeleton(shape: InputCloud, options: CloudOptions, settings:
 /** Opens the shape here while the pool's threads open it too, then runs the pipeline on them. */
 async function onPool(
   opening: Promise<NodePool> | null,
-  open: () => Promise<{ pipeline(options: Options): Pipeline; dispose(): void }>,
-  options: Options,
+  open: () => Promise<{ pipeline(options: ShapeOptions): Pipeline; dispose(): void }>,
+  options: ShapeOptions,
   file: string,
   io: CliIo,
   progress: ProgressLine,

@@ -9,6 +9,7 @@ import createCscdModule, {
   type SurfaceHandle,
 } from '../../build/wasm/cscd.js';
 import { refine, refinedPoint, refinementOf, skeletonForInput } from '../mesh/refine.ts';
+import { stage1Mesh } from '../mesh/simplify.ts';
 import {
   CoreError,
   type CandidateRecord,
@@ -28,6 +29,7 @@ import {
   type Polyline,
   type RefinedSurface,
   type Refinement,
+  type Simplification,
   type Separator,
   type ShortenedCloudLoop,
   type Skeleton,
@@ -38,7 +40,8 @@ import {
 } from './types.ts';
 
 export * from './types.ts';
-export { defaultOptions } from './options.ts';
+import { defaultOptions } from './options.ts';
+export { defaultOptions };
 
 /** Turns the core's failures into CoreError; `unwrap(x)` returns x when it is not one. */
 type Unwrap = <T>(result: T | CoreFailure) => T;
@@ -150,8 +153,11 @@ class WasmSurface extends Owner<SurfaceHandle> implements Surface {
     return this.unwrap(this.live().separator(source, options)) as Separator;
   }
 
-  pipeline(options: Partial<Options> = {}): Pipeline {
-    return new WasmPipeline(opened(new this.module.Pipeline(this.live(), options), this.unwrap), this.unwrap);
+  /** The pipeline on this surface, or with `working`: stage 1 there (a simplified copy), stage 2 here. */
+  pipeline(options: Partial<Options> = {}, working?: Surface): Pipeline {
+    if (working && !(working instanceof WasmSurface)) throw new CoreError('the working surface must be one of this core', 'input');
+    const handle = working ? new this.module.Pipeline(working.live(), options, this.live()) : new this.module.Pipeline(this.live(), options);
+    return new WasmPipeline(opened(handle, this.unwrap), this.unwrap);
   }
 
   skeleton(options: Partial<Options> = {}): Skeleton {
@@ -175,11 +181,12 @@ function skeletonOf(shape: { pipeline(options: Partial<Options>): Pipeline }, op
   }
 }
 
-/** A pipeline on the refined mesh whose skeleton is for the mesh as given. */
+/** A pipeline on the refined mesh (or with stage 1 on a simplified copy) whose skeleton is for the mesh as given. */
 class RefinedPipeline implements Pipeline {
   constructor(
     private readonly inner: Pipeline,
     private readonly refined: Refinement | null,
+    private readonly simplified: Simplification | null,
   ) {}
 
   step(sources: number): PipelineProgress {
@@ -199,7 +206,7 @@ class RefinedPipeline implements Pipeline {
   }
 
   finish(): Skeleton {
-    return skeletonForInput(this.inner.finish(), this.refined);
+    return skeletonForInput(this.inner.finish(), this.refined, this.simplified);
   }
 
   dispose(): void {
@@ -209,10 +216,16 @@ class RefinedPipeline implements Pipeline {
 
 /** See RefinedSurface (types.ts): the solver is opened on the refined mesh, whose first vertices are the input's. */
 class WasmRefinedSurface implements RefinedSurface {
+  /** Stage 1's simplified copy (lib/mesh/simplify.ts) for the last `stage1Vertices` asked, opened by the first pipeline that needs it. */
+  private working: { stage1Vertices: number; surface: WasmSurface } | null = null;
+
   constructor(
-    private readonly inner: Surface,
+    private readonly inner: WasmSurface,
     readonly facts: MeshFacts,
     readonly refined: Refinement | null,
+    /** Stage 1's mesh for a `stage1Vertices` when it is a simplified copy, else null. */
+    private readonly stage1: (stage1Vertices: number) => { mesh: MeshArrays; simplified: Simplification } | null,
+    private readonly open: (mesh: MeshArrays) => WasmSurface,
   ) {}
 
   distanceFromVertex(vertex: number): Float64Array {
@@ -240,7 +253,13 @@ class WasmRefinedSurface implements RefinedSurface {
   }
 
   pipeline(options: Partial<Options> = {}): Pipeline {
-    return new RefinedPipeline(this.inner.pipeline(options), this.refined);
+    const stage1Vertices = options.stage1Vertices ?? defaultOptions.stage1Vertices;
+    const stage1 = this.stage1(stage1Vertices);
+    if (stage1 && this.working?.stage1Vertices !== stage1Vertices) {
+      this.working?.surface.dispose();
+      this.working = { stage1Vertices, surface: this.open(stage1.mesh) };
+    }
+    return new RefinedPipeline(this.inner.pipeline(options, stage1 ? this.working!.surface : undefined), this.refined, stage1?.simplified ?? null);
   }
 
   skeleton(options: Partial<Options> = {}): Skeleton {
@@ -248,6 +267,7 @@ class WasmRefinedSurface implements RefinedSurface {
   }
 
   dispose(): void {
+    this.working?.surface.dispose();
     this.inner.dispose();
   }
 
@@ -352,7 +372,7 @@ class WasmCore implements Core {
     return this.unwrapCloud(result) as Evaluation;
   }
 
-  openSurface(mesh: MeshArrays): Surface {
+  openSurface(mesh: MeshArrays): WasmSurface {
     return new WasmSurface(opened(new this.module.Surface(mesh.positions, mesh.triangles), this.unwrap), this.module, this.unwrap);
   }
 
@@ -360,10 +380,15 @@ class WasmCore implements Core {
     return new WasmCloud(opened(new this.module.Cloud(cloud.positions, cloud.normals, options), this.unwrapCloud), this.module, this.unwrapCloud);
   }
 
+  openStage1Surface(mesh: MeshArrays, options: Partial<Options> = {}): Surface {
+    const stage1 = stage1Mesh(mesh, this.inspect(mesh), options.stage1Vertices ?? defaultOptions.stage1Vertices);
+    return stage1 ? this.openSurface(stage1.mesh) : this.openRefinedSurface(mesh);
+  }
+
   openRefinedSurface(mesh: MeshArrays): RefinedSurface {
     const facts = this.inspect(mesh);
     const refined = refinementOf(facts);
-    return new WasmRefinedSurface(this.openSurface(refine(mesh, refined?.levels ?? 0)), facts, refined);
+    return new WasmRefinedSurface(this.openSurface(refine(mesh, refined?.levels ?? 0)), facts, refined, (limit) => stage1Mesh(mesh, facts, limit), (m) => this.openSurface(m));
   }
 }
 

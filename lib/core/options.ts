@@ -14,7 +14,10 @@ export const AUTO_N = Object.freeze({ covered: 0.99, window: 20, minGain: 0.005,
 /** The auto-N rule in words, for help texts and docs. */
 export const AUTO_N_RULE = `until ${AUTO_N.covered * 100}% of the surface is near a source or a separator, or ${AUTO_N.window} more sources add less than ${AUTO_N.minGain * 100}% (at most ${AUTO_N.max})`;
 
-interface Common<K extends keyof CloudOptions> {
+/** Every option of meshes and clouds together. */
+export type AnyOptions = Options & CloudOptions;
+
+interface Common<K extends keyof AnyOptions> {
   key: K;
   /** CLI flag, kebab-case of the key; a switch that is on by default is turned off by --no-<flag>. */
   flag: string;
@@ -23,7 +26,7 @@ interface Common<K extends keyof CloudOptions> {
    * that opens a cloud), or `skeleton` only.
    */
   commands: 'all' | 'skeleton';
-  default: CloudOptions[K];
+  default: AnyOptions[K];
   /** One line: what it changes, in which unit. */
   help: string;
 }
@@ -38,6 +41,11 @@ interface CloudOnly {
   shapes: 'cloud';
   stage: 'open';
 }
+/** An option of meshes only, of the whole-shape run. */
+interface MeshOnly {
+  shapes: 'mesh';
+  stage: 'skeleton';
+}
 export type OptionSpec =
   | (Common<'target'> & EveryShape & { kind: 'choice'; /** each value with its label in the panel */ choices: Readonly<Record<Options['target'], string>> })
   | (Common<'sphere'> & EveryShape & { kind: 'switch' })
@@ -51,10 +59,11 @@ export type OptionSpec =
       slider?: true;
     })
   | (Common<'n'> & EveryShape & { kind: 'count'; range: readonly [number, number]; placeholder: string })
-  | (Common<'neighbours'> & CloudOnly & { kind: 'integer'; range: readonly [number, number]; placeholder: string });
+  | (Common<'neighbours'> & CloudOnly & { kind: 'integer'; range: readonly [number, number]; placeholder: string })
+  | (Common<'stage1Vertices'> & MeshOnly & { kind: 'integer'; range: readonly [number, number]; placeholder: string });
 
 /** The options a mesh takes: all but the point-cloud ones. */
-export type MeshOptionSpec = Extract<OptionSpec, { shapes: 'all' }>;
+export type MeshOptionSpec = Extract<OptionSpec, { shapes: 'all' | 'mesh' }>;
 
 export const OPTIONS: readonly OptionSpec[] = Object.freeze([
   {
@@ -98,13 +107,21 @@ export const OPTIONS: readonly OptionSpec[] = Object.freeze([
     help: 'sources drawn at once in stage 1, their separators computed together (in parallel by workers): the skeleton depends on it, not on the number of workers',
   },
   {
+    key: 'stage1Vertices', flag: 'stage1-vertices', shapes: 'mesh', stage: 'skeleton', commands: 'skeleton', kind: 'integer', default: 20000,
+    range: [0, 100_000_000], placeholder: 'V',
+    help: 'meshes only: above this many vertices, stage 1 runs on a copy simplified to about as many (quadric edge collapse, topology kept) and its separators are mapped back; stage 2 and the skeleton use the mesh as given; 0: never (docs/multiscale.md)',
+  },
+  {
     key: 'neighbours', flag: 'neighbours', shapes: 'cloud', stage: 'open', commands: 'all', kind: 'integer', default: 30, range: [3, 256], placeholder: 'K',
     help: 'point clouds only: neighbours of each point (k of the k-nearest-neighbour search) that its local triangulation, and so the distances, are built from',
   },
 ] satisfies OptionSpec[]);
 
 /** The options of meshes, in their declared order (every front end that opens only meshes shows these). */
-export const MESH_OPTIONS: readonly MeshOptionSpec[] = Object.freeze(OPTIONS.filter((o): o is MeshOptionSpec => o.shapes === 'all'));
+export const MESH_OPTIONS: readonly MeshOptionSpec[] = Object.freeze(OPTIONS.filter((o): o is MeshOptionSpec => o.shapes !== 'cloud'));
+
+/** The options of point clouds, in their declared order: all but the mesh-only ones. */
+export const CLOUD_OPTIONS: readonly OptionSpec[] = Object.freeze(OPTIONS.filter((o) => o.shapes !== 'mesh'));
 
 /**
  * Settings of a run: how it is computed, never what it gives. Unlike the options they reach neither
@@ -140,9 +157,15 @@ export const defaultOptions: Readonly<Options> = Object.freeze(
   Object.fromEntries(MESH_OPTIONS.map((o) => [o.key, o.default])) as unknown as Options,
 );
 
-/** Defaults of every option of a point cloud: all of them. */
+/** A mesh's options as a point cloud's: the mesh-only ones left out, `neighbours` added. */
+export function cloudOptionsOf(options: Options, neighbours: number): CloudOptions {
+  const all: Record<string, unknown> = { ...options, neighbours };
+  return Object.fromEntries(CLOUD_OPTIONS.map((o) => [o.key, all[o.key]])) as unknown as CloudOptions;
+}
+
+/** Defaults of every option of a point cloud. */
 export const defaultCloudOptions: Readonly<CloudOptions> = Object.freeze(
-  Object.fromEntries(OPTIONS.map((o) => [o.key, o.default])) as unknown as CloudOptions,
+  Object.fromEntries(CLOUD_OPTIONS.map((o) => [o.key, o.default])) as unknown as CloudOptions,
 );
 
 type NumericKey = Extract<OptionSpec, { range: readonly [number, number] }>['key'];
@@ -181,8 +204,8 @@ export function cliFlag(spec: OptionSpec): string {
 }
 
 /** An option's value from its text (String(value) writes it); null when it is not acceptable. */
-export function parseOptionText<K extends keyof CloudOptions>(spec: Extract<OptionSpec, { key: K }>, text: string): CloudOptions[K] | null {
-  return parseSpecText(spec as OptionSpec, text) as CloudOptions[K] | null;
+export function parseOptionText<K extends keyof AnyOptions>(spec: Extract<OptionSpec, { key: K }>, text: string): AnyOptions[K] | null {
+  return parseSpecText(spec as OptionSpec, text) as AnyOptions[K] | null;
 }
 
 /** Options from `key=value` texts (the scripts' --set), each read as the address bar reads it, among `specs`; throws on any other. */

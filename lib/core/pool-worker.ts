@@ -22,8 +22,9 @@ export type PoolStart = PoolStartCommon & (
   | {
     mesh: MeshArrays;
     /**
-     * true: open `mesh` refined as Core.openRefinedSurface refines it (Node: the owner has the mesh as
-     * read); false: open it as given (the page: the geometry worker's mesh is already refined).
+     * true: open the surface a RefinedSurface's pipeline on `mesh` runs stage 1 on (Core.openStage1Surface:
+     * refined when coarse, simplified when large; Node: the owner has the mesh as read); false: open it
+     * as given (the page: the geometry worker sends the mesh stage 1 runs on).
      */
     refine: boolean;
     options: Partial<Options>;
@@ -63,7 +64,7 @@ export async function servePoolWorker(start: PoolStart, port: PoolPort): Promise
   try {
     const core = await createCore(start.wasm, { memoryLimitMB: start.memoryLimitMB });
     if ('cloud' in start) pipeline = core.openCloud(start.cloud, start.options).pipeline(start.options);
-    else pipeline = (start.refine ? core.openRefinedSurface(start.mesh) : core.openSurface(start.mesh)).pipeline(start.options);
+    else pipeline = (start.refine ? core.openStage1Surface(start.mesh, start.options) : core.openSurface(start.mesh)).pipeline(start.options);
   } catch (error) {
     port.post({ error: { message: messageOf(error), kind: kindOf(error) } });
     return;

@@ -76,6 +76,18 @@ export interface Refinement {
 }
 
 /**
+ * How a large mesh was simplified for stage 1 (lib/mesh/simplify.ts, docs/multiscale.md): the sources
+ * and loops of stage 1 are on a copy of `toVertices` vertices; stage 2 and the skeleton are on the mesh
+ * as given.
+ */
+export interface Simplification {
+  fromVertices: number;
+  fromFaces: number;
+  toVertices: number;
+  toFaces: number;
+}
+
+/**
  * Every option of the CSCD pipeline, with the same names in C++ (wasm/src/cscd/options.h), the
  * bindings, worker messages, UI labels and CLI flags. Defaults: `defaultOptions` in lib/core/options.ts.
  */
@@ -98,16 +110,21 @@ export interface Options {
   pruneLengthFactor: number;
   /** Sources drawn at once in stage 1; their separators are computed together (by a pool of workers). */
   roundSize: number;
+  /** Meshes only: above this many vertices stage 1 runs on a copy simplified to about as many (lib/mesh/simplify.ts); 0: never. */
+  stage1Vertices: number;
 }
 
 /**
- * The options of a point cloud: every option, and those only clouds have (lib/core/options.ts,
- * `shapes: 'cloud'`), which say how the cloud is made into a surface to compute on.
+ * The options of a point cloud: every option but the mesh-only ones, and those only clouds have
+ * (lib/core/options.ts, `shapes: 'cloud'`), which say how the cloud is made into a surface to compute on.
  */
-export interface CloudOptions extends Options {
+export interface CloudOptions extends Omit<Options, 'stage1Vertices'> {
   /** Neighbours of each point (k of the kNN search) that its local triangulation is built from. */
   neighbours: number;
 }
+
+/** The options of a run on either kind of shape. */
+export type ShapeOptions = Options | CloudOptions;
 
 /** Why stage 1 produced no separator for a source ('ok' when it did). */
 export type SeparatorStatus =
@@ -245,6 +262,8 @@ export interface Skeleton {
     timings: Record<string, number>;
     /** Set by a RefinedSurface: how the mesh was refined (null: not at all); vertexToNode then holds the input's vertices. */
     refined?: Refinement | null;
+    /** Set by a RefinedSurface: how the mesh was simplified for stage 1 (null: not at all); `candidates.sources` are then the copy's vertices. */
+    simplified?: Simplification | null;
   };
 }
 
@@ -310,8 +329,11 @@ export interface Surface {
   distanceFromPoints(points: SurfacePoint[]): Float64Array;
   /** Stage 1 for one source vertex; per-mesh data is reused, so repeated calls are cheap. */
   separator(source: number, options?: Partial<Options>): Separator;
-  /** The whole pipeline, as a resumable job (see Pipeline). */
-  pipeline(options?: Partial<Options>): Pipeline;
+  /**
+   * The whole pipeline, as a resumable job (see Pipeline). With `working` (a surface of this core on a
+   * simplified copy of this mesh, lib/mesh/simplify.ts): stage 1 runs there, stage 2 here.
+   */
+  pipeline(options?: Partial<Options>, working?: Surface): Pipeline;
   /** The whole pipeline in one call. */
   skeleton(options?: Partial<Options>): Skeleton;
   /** Frees the WASM-side object; the Surface must not be used afterwards. */
@@ -324,6 +346,8 @@ export interface Surface {
  * per-vertex output are those of the mesh as given (its vertices come first in the refined mesh).
  */
 export interface RefinedSurface extends Surface {
+  /** Its pipelines take no working surface: they choose it (lib/mesh/simplify.ts). */
+  pipeline(options?: Partial<Options>): Pipeline;
   /** What was done to the mesh before opening the solver, or null: it is used as it is. */
   readonly refined: Refinement | null;
 }
@@ -468,6 +492,12 @@ export interface Core {
    * CSCD-M), with results per vertex of `mesh`: what every consumer that computes on a user's mesh uses.
    */
   openRefinedSurface(mesh: MeshArrays): RefinedSurface;
+  /**
+   * The surface a RefinedSurface's pipeline on `mesh` with `options` runs stage 1 on (refined when
+   * coarse, a simplified copy when larger than `options.stage1Vertices`): what a pool worker computes
+   * separators on.
+   */
+  openStage1Surface(mesh: MeshArrays, options?: Partial<Options>): Surface;
   /**
    * Builds the per-cloud state (of a cloud that passed checkCloud, lib/io/cloud-check.ts); only the
    * cloud-only options matter to it. Throws CoreError when the cloud cannot be processed.

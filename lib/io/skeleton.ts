@@ -18,7 +18,7 @@
  * binary, `edge` element with vertex1/vertex2 or a vertex_indices list; OBJ `l` polylines).
  */
 import { defaultOptions } from '../core/options.ts';
-import type { Options, Polyline, Skeleton } from '../core/types.ts';
+import type { Polyline, ShapeOptions, Skeleton } from '../core/types.ts';
 import { findElement, findProperty, parsePlyHeader, readPlyElements, type PlyErrors, type PlyProperty } from './ply-elements.ts';
 
 export type SkeletonFormat = 'json' | 'ply' | 'obj' | 'swc';
@@ -29,7 +29,7 @@ export const SKELETON_FORMATS = Object.keys({ json: 0, ply: 0, obj: 0, swc: 0 } 
 /** What a skeleton was made from: the mesh (a file name or path, as the caller wants it shown) and the options. */
 export interface SkeletonMeta {
   mesh: string;
-  options: Options;
+  options: ShapeOptions;
 }
 
 export type SkeletonWriter = (skeleton: Skeleton, meta: SkeletonMeta) => string;
@@ -48,7 +48,7 @@ export interface SkeletonJson {
   /** Per separator: false for an open path whose ends lie on the mesh boundary. */
   separatorsClosed: boolean[];
   stats: Skeleton['stats'];
-  options: Options;
+  options: ShapeOptions;
 }
 
 /** A skeleton read from a file: positions (xyz per node), radii (null when the file has none) and node index pairs. */
@@ -94,10 +94,10 @@ function toPairs(indices: Uint32Array): [number, number][] {
 }
 
 /** Options in the order of defaultOptions (then any other key, sorted), whatever order the caller built them in. */
-function orderedOptions(options: Options): Options {
-  const keys = Object.keys(defaultOptions) as (keyof Options)[];
-  const extra = (Object.keys(options) as (keyof Options)[]).filter((k) => !keys.includes(k)).sort();
-  return Object.fromEntries([...keys, ...extra].filter((k) => k in options).map((k) => [k, options[k]])) as unknown as Options;
+function orderedOptions(options: ShapeOptions): ShapeOptions {
+  const keys = Object.keys(defaultOptions) as (keyof ShapeOptions)[];
+  const extra = (Object.keys(options) as (keyof ShapeOptions)[]).filter((k) => !keys.includes(k)).sort();
+  return Object.fromEntries([...keys, ...extra].filter((k) => k in options).map((k) => [k, options[k]])) as unknown as ShapeOptions;
 }
 
 /** One line of text: a path or JSON inside a comment must not start a new line of the file. */
@@ -137,6 +137,7 @@ export function skeletonJson(skeleton: Skeleton, meta: SkeletonMeta): SkeletonJs
       seed: stats.seed,
       timings: { ...stats.timings },
       refined: stats.refined ?? null,
+      simplified: stats.simplified ?? null,
     },
     options: orderedOptions(meta.options),
   };

@@ -10,7 +10,7 @@
  * vertices keep their indices 0..V-1 and new vertices follow in a fixed order, so per-vertex results
  * of the input are the first V entries of those of the refined mesh. See docs/refine.md.
  */
-import type { MeshArrays, MeshFacts, Refinement, Skeleton } from '../core/types.ts';
+import type { MeshArrays, MeshFacts, Refinement, Simplification, Skeleton } from '../core/types.ts';
 
 // Both are shares of the bounding-box diagonal taken by the mean edge length (scale-free, in the
 // facts of every mesh), measured in docs/refine.md. The 26 shared meshes, which all get right
@@ -49,11 +49,12 @@ export function refinementOf(facts: MeshFacts): Refinement | null {
 
 /**
  * A skeleton computed on the mesh `refined` made, for the mesh as given: `vertexToNode` cut to its
- * vertices (the refined mesh's first ones) and `stats.refined` set.
+ * vertices (the refined mesh's first ones), `stats.refined` set, and `stats.simplified` (how stage 1's
+ * copy was made, lib/mesh/simplify.ts).
  */
-export function skeletonForInput(skeleton: Skeleton, refined: Refinement | null): Skeleton {
+export function skeletonForInput(skeleton: Skeleton, refined: Refinement | null, simplified: Simplification | null = null): Skeleton {
   const vertexToNode = refined ? skeleton.vertexToNode.slice(0, refined.fromVertices) : skeleton.vertexToNode;
-  return { ...skeleton, vertexToNode, stats: { ...skeleton.stats, refined } };
+  return { ...skeleton, vertexToNode, stats: { ...skeleton.stats, refined, simplified } };
 }
 
 /**

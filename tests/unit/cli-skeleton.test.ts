@@ -14,7 +14,7 @@ const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-skeleton-'));
 afterAll(() => rmSync(tmp, { recursive: true, force: true }));
 
 const KEYS = ['mesh', 'nodes', 'radii', 'edges', 'vertexToNode', 'separators', 'separatorsClosed', 'stats', 'options'];
-const STATS = ['n', 'candidates', 'pruned', 'packed', 'cycles', 'seed', 'timings', 'refined'];
+const STATS = ['n', 'candidates', 'pruned', 'packed', 'cycles', 'seed', 'timings', 'refined', 'simplified'];
 /** The one part of the JSON that changes from run to run. */
 const withoutTimings = (text: string) => text.replace(/"timings":\{[^{}]*\}/, '"timings":{}');
 
@@ -189,6 +189,19 @@ describe('cscd skeleton usage', () => {
     // Stage-2 options are not flags of `cscd separator`.
     expect(await cscd('separator', twoTorus, '--n', '5')).toMatchObject({ status: 2, stdout: '' });
   });
+
+  it('runs stage 1 on a simplified copy above --stage1-vertices and says so in the JSON; 0 never simplifies', async () => {
+    const fertility = sharedMesh('fertility_9k.ply'); // 4494 vertices, genus 4
+    const runs = await Promise.all(['2000', '0'].map((limit) => cscd('skeleton', fertility, '--n', '24', '--stage1-vertices', limit, '--workers', '1')));
+    const [copy, full] = runs.map((r) => JSON.parse(r.stdout) as SkeletonJson);
+    expect(copy.options).toMatchObject({ stage1Vertices: 2000 });
+    expect(copy.stats.simplified).toMatchObject({ fromVertices: 4494, fromFaces: 9000 });
+    expect(Math.abs(copy.stats.simplified!.toVertices - 2000)).toBeLessThan(100);
+    expect(copy.vertexToNode).toHaveLength(4494);
+    expect(copy.stats.cycles).toBe(4);
+    expect(full.stats.simplified).toBeNull();
+    expect(await cscd('skeleton', fertility, '--stage1-vertices=-5')).toEqual({ status: 2, stdout: '', stderr: "cscd: --stage1-vertices must be an integer from 0 to 100000000, got '-5'\n" });
+  }, 120_000);
 
   it('is listed in the help with its options', async () => {
     expect((await cscd('--help')).stdout).toMatch(/skeleton <mesh\|cloud> \[options\]/);

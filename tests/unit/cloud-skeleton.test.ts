@@ -141,10 +141,12 @@ describe('CSCD-PC skeletons', () => {
     }
   });
 
-  it('refuses --decimate on a cloud and --neighbours on a mesh', async () => {
-    const onCloud = await cscd('skeleton', fixture('clouds', 'bob_subsample.ply'), '--decimate', '100');
-    expect(onCloud.status).not.toBe(0);
-    expect(onCloud.stderr).toContain('--decimate does not apply');
+  it('refuses --decimate and --stage1-vertices on a cloud and --neighbours on a mesh', async () => {
+    for (const flag of ['decimate', 'stage1-vertices']) {
+      const onCloud = await cscd('skeleton', fixture('clouds', 'bob_subsample.ply'), `--${flag}`, '100');
+      expect(onCloud.status).not.toBe(0);
+      expect(onCloud.stderr).toContain(`--${flag} does not apply`);
+    }
     const onMesh = await cscd('skeleton', sharedMesh('bob.ply'), '--neighbours', '12');
     expect(onMesh.status).not.toBe(0);
     expect(onMesh.stderr).toContain('--neighbours does not apply');

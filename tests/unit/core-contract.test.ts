@@ -61,11 +61,11 @@ const SKELETON: Contract<Skeleton> = {
     } satisfies Contract<Skeleton['candidates']>,
   },
   packed: 'Uint32Array',
-  // `refined` is added by a RefinedSurface.
+  // `refined` and `simplified` are added by a RefinedSurface.
   stats: {
     object: { n: 'number', candidates: 'number', pruned: 'number', packed: 'number', cycles: 'number', seed: 'number', timings: 'milliseconds' } satisfies Omit<
       Contract<Skeleton['stats']>,
-      'refined'
+      'refined' | 'simplified'
     >,
   },
 };
@@ -148,7 +148,7 @@ describe('the core’s records', () => {
     }
   });
 
-  it('a refined surface adds only `refined`', () => {
+  it('a refined surface adds only `refined` (and `simplified`, null on a mesh this small)', () => {
     const surface = core.openRefinedSurface(TORUS); // coarse enough to be refined
     const REFINEMENT = { object: { fromVertices: 'number', fromFaces: 'number', toFaces: 'number', levels: 'number' } satisfies Contract<Refinement> } as const;
     try {
@@ -156,8 +156,9 @@ describe('the core’s records', () => {
       expect(breaches(refined, REFINEMENT, 'refined')).toEqual([]);
       expect(keeps(rest, SEPARATOR)).toEqual([]);
       const skeleton = surface.skeleton({ n: 4 });
-      const { refined: again, ...stats } = skeleton.stats;
+      const { refined: again, simplified, ...stats } = skeleton.stats;
       expect(again).toEqual(refined);
+      expect(simplified).toBeNull();
       expect(keeps({ ...skeleton, stats }, SKELETON)).toEqual([]);
     } finally {
       surface.dispose();

@@ -17,7 +17,7 @@ beforeAll(async () => {
 describe('the option specification', () => {
   it('has the core’s defaults, ranges and auto-N constants', () => {
     const limits = core.optionLimits();
-    expect(limits.defaults).toEqual({ ...defaultCloudOptions });
+    expect(limits.defaults).toEqual({ ...defaultOptions, ...defaultCloudOptions });
     expect(limits.ranges).toEqual(Object.fromEntries(Object.entries(optionRanges).map(([k, r]) => [k, [...r]])));
     expect(limits.autoN).toEqual({ ...AUTO_N });
   });
@@ -40,9 +40,11 @@ describe('the option specification', () => {
     for (const o of MESH_OPTIONS) expect(options[o.key], o.key).not.toBe(o.default);
   });
 
-  it('keeps the point-cloud options out of a mesh’s options (and so out of its skeleton file)', () => {
+  it('keeps the point-cloud options out of a mesh’s options and the mesh options out of a cloud’s (and so out of their skeleton files)', () => {
     expect(Object.keys(defaultOptions)).not.toContain('neighbours');
-    expect(defaultCloudOptions).toEqual({ ...defaultOptions, neighbours: 30 });
+    const { stage1Vertices, ...shared } = defaultOptions;
+    expect(stage1Vertices).toBe(20000);
+    expect(defaultCloudOptions).toEqual({ ...shared, neighbours: 30 });
   });
 
   it('is the option table of the README and docs/cli.md', () => {

@@ -194,6 +194,7 @@ public:
   void centre(SkeletonGraph&, const Selection<Candidate>&) const {} // region centroids lie on the axes
 
   const Samples& samples() const { return shape.samples; }
+  size_t sourceCount() const { return shape.samples.positions.size(); }
 
   // Within the tube of radius 1 around the nearest point's axis.
   bool inside(const Vector3& p) const {

@@ -273,7 +273,11 @@ export class WholeShape {
     this.panel.setStatus({
       kind: 'done',
       title: 'Skeleton computed',
-      text: [`${nodeCount} nodes and ${Math.floor(s.edges.length / 2)} edges from ${s.stats.packed} packed loops of ${s.stats.candidates} candidates.`, ...poolSentences(reply.pool)].join(' '),
+      text: [
+        `${nodeCount} nodes and ${Math.floor(s.edges.length / 2)} edges from ${s.stats.packed} packed loops of ${s.stats.candidates} candidates.`,
+        ...(s.stats.simplified ? [`Stage 1 ran on a copy simplified to ${s.stats.simplified.toVertices} vertices (option stage1Vertices).`] : []),
+        ...poolSentences(reply.pool),
+      ].join(' '),
     });
     document.body.dataset.skRun = 'done';
     document.body.dataset.skeletonRuns = String(++this.runs);

@@ -583,7 +583,7 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("exactDistanceFromVertex", &SurfaceBinding::exactDistanceFromVertex)
       .function("separator", &SurfaceBinding::separator)
       .function("distanceFromPoints", &SurfaceBinding::distanceFromPoints);
-  bindPipeline<MeshRealization, SurfaceBinding>("Pipeline");
+  bindPipeline<MeshRealization, SurfaceBinding, /*multiscale=*/true>("Pipeline");
   bindPipeline<PointCloudRealization, CloudBinding>("CloudPipeline");
   class_<CloudBinding>("Cloud")
       .constructor<const val&, const val&, const val&>()

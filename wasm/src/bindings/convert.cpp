@@ -55,6 +55,7 @@ Options toOptions(const val& given) {
   options.pruneLengthFactor = number("pruneLengthFactor", options.pruneLengthFactor);
   options.roundSize = int(number("roundSize", options.roundSize));
   options.neighbours = int(number("neighbours", options.neighbours));
+  options.stage1Vertices = int(number("stage1Vertices", options.stage1Vertices));
   return options;
 }
 
@@ -71,6 +72,7 @@ val optionLimits() {
   defaults.set("pruneLengthFactor", d.pruneLengthFactor);
   defaults.set("roundSize", d.roundSize);
   defaults.set("neighbours", d.neighbours);
+  defaults.set("stage1Vertices", d.stage1Vertices);
   val ranges = val::object();
   for (const OptionRange& range : kOptionRanges) {
     val pair = val::array();

@@ -53,7 +53,8 @@ export interface CscdModule {
   /** Test-only: the core's option defaults, ranges and auto-N constants. */
   optionLimits(): { defaults: Record<string, unknown>; ranges: Record<string, [number, number]>; autoN: Record<string, number> };
   Surface: new (positions: Float64Array | Float32Array, triangles: Uint32Array) => SurfaceHandle;
-  Pipeline: new (surface: SurfaceHandle, options: object) => PipelineHandle;
+  /** With `given`: stage 1 on `surface` (a simplified copy), stage 2 and the skeleton on `given`. */
+  Pipeline: new (surface: SurfaceHandle, options: object, given?: SurfaceHandle) => PipelineHandle;
   Cloud: new (positions: Float64Array, normals: Float32Array | null, options: object) => CloudHandle;
   CloudPipeline: new (cloud: CloudHandle, options: object) => PipelineHandle;
 }

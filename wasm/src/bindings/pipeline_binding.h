@@ -123,14 +123,16 @@ class PipelineBinding {
 
 public:
   PipelineBinding(ShapeBinding& shape_, const val& options) : shape(shape_) {
-    try {
-      if (!shape.shape()) throw InputError("the shape could not be opened");
-      settings = toOptions(options);
-      realization = std::make_unique<Realization>(*shape.shape(), settings);
-      pipeline = std::make_unique<Pipeline<Realization>>(*realization, settings);
-    } catch (...) {
-      failure = failureOf(std::current_exception());
-    }
+    open(options, [&](const Options& settings) { return std::make_unique<Realization>(*shape.shape(), settings); });
+  }
+
+  // Multiscale (meshes): stage 1 on `working` (sources and candidate records are its), stage 2 and the
+  // skeleton on `given`, the mesh as given.
+  PipelineBinding(ShapeBinding& working, const val& options, ShapeBinding& given) : shape(working) {
+    open(options, [&](const Options& settings) {
+      if (!given.shape()) throw InputError("the shape could not be opened");
+      return std::make_unique<Realization>(*given.shape(), settings, shape.shape());
+    });
   }
 
   val error() const { return failure ? toVal(*failure) : val::null(); }
@@ -173,6 +175,18 @@ public:
   }
 
 private:
+  template <class Make>
+  void open(const val& options, Make make) {
+    try {
+      if (!shape.shape()) throw InputError("the shape could not be opened");
+      settings = toOptions(options);
+      realization = make(settings);
+      pipeline = std::make_unique<Pipeline<Realization>>(*realization, settings);
+    } catch (...) {
+      failure = failureOf(std::current_exception());
+    }
+  }
+
   // Progress, with the loops taken since the last report (for display): those of accepted rounds
   // only, since a round under way may still be cut short by the auto stop.
   val progressRecord(const Progress& progress) {
@@ -194,7 +208,7 @@ private:
   }
 
   size_t checkedSource(uint32_t source) const {
-    if (source >= realization->samples().positions.size())
+    if (source >= realization->sourceCount())
       throw InputError("source " + std::to_string(source) + " is out of range");
     return source;
   }
@@ -207,12 +221,13 @@ private:
   std::optional<Failure> failure;
 };
 
-template <class Realization, class ShapeBinding>
+// multiscale: the realization also runs stage 1 on a working copy of the shape (a third argument).
+template <class Realization, class ShapeBinding, bool multiscale = false>
 void bindPipeline(const char* name) {
   using Binding = PipelineBinding<Realization, ShapeBinding>;
-  emscripten::class_<Binding>(name)
-      .template constructor<ShapeBinding&, const val&>()
-      .function("error", &Binding::error)
+  auto bound = emscripten::class_<Binding>(name).template constructor<ShapeBinding&, const val&>();
+  if constexpr (multiscale) bound.template constructor<ShapeBinding&, const val&, ShapeBinding&>();
+  bound.function("error", &Binding::error)
       .function("step", &Binding::step)
       .function("drawRound", &Binding::drawRound)
       .function("separators", &Binding::separators)

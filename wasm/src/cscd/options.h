@@ -29,6 +29,10 @@ struct Options {
   // search). 30 is geometry-central's default, which the paper's PotPourri3D point-cloud solver uses;
   // at least 3, as fewer cannot surround a point with triangles.
   int neighbours = 30;
+  // Meshes only: above this many vertices stage 1 runs on a simplified copy (0: never). The front ends
+  // make the copy (lib/mesh/simplify.ts, quadric edge collapse in TypeScript) and give the pipeline both
+  // surfaces; declared here so that the core checks its range as it checks every option's.
+  int stage1Vertices = 20000;
 };
 
 // Accepted ranges of the numeric options (inclusive); toOptions in the bindings refuses anything else.
@@ -39,7 +43,7 @@ struct OptionRange {
 constexpr OptionRange kOptionRanges[] = {
     {"seed", 0, 4294967295.0},   {"angleThreshold", 0, M_PI}, {"laplacianThreshold", 0, 1e6},
     {"pruneDepth", 0, 1000},     {"n", 1, 100000},            {"pruneLengthFactor", 0, 1000},
-    {"roundSize", 1, 256},       {"neighbours", 3, 256},
+    {"roundSize", 1, 256},       {"neighbours", 3, 256},      {"stage1Vertices", 0, 100000000},
 };
 
 } // namespace cscd

@@ -15,6 +15,8 @@
 //   Regions regions(const Selection<Candidate>& packed)
 //   void centre(SkeletonGraph& graph, const Selection<Candidate>& packed)   region and branch node positions
 //   const Samples& samples()                    the shape's elements, their areas and neighbours
+//   size_t sourceCount()                        how many elements sources are drawn from (a mesh's
+//                                               working copy may have fewer than the shape)
 //   bool inside(const Vector3& p)               whether p lies inside the shape (for closed separators)
 //   void fitRadii(SkeletonGraph& graph)         node radii fitted to the shape around the final skeleton
 
@@ -103,6 +105,7 @@ struct IsRealization {
       std::is_void_v<decltype(std::declval<R&>().centre(std::declval<SkeletonGraph&>(),
                                                          std::declval<const Selection<C>&>()))> &&
       std::is_same_v<decltype(std::declval<R&>().samples()), const Samples&> &&
+      std::is_convertible_v<decltype(std::declval<R&>().sourceCount()), size_t> &&
       std::is_convertible_v<decltype(std::declval<R&>().inside(std::declval<const geometrycentral::Vector3&>())), bool> &&
       std::is_void_v<decltype(std::declval<R&>().fitRadii(std::declval<SkeletonGraph&>()))>;
 };

@@ -7,6 +7,9 @@
 #include "mesh/regions.h"
 #include "mesh/separator.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace cscd {
 
 namespace {
@@ -24,14 +27,40 @@ Samples vertexSamplesOf(Surface& surface) {
   return samples;
 }
 
+SourceSampler samplerOf(const Samples& samples, double diagonal, uint32_t seed) {
+  return SourceSampler(samples.positions, samples.weights, diagonal, seed);
+}
+
+// Barycentric coordinates of p (a point of triangle abc) on its corners.
+geometrycentral::Vector3 barycentric(const geometrycentral::Vector3& p, const geometrycentral::Vector3& a,
+                                     const geometrycentral::Vector3& b, const geometrycentral::Vector3& c) {
+  const geometrycentral::Vector3 ab = b - a, ac = c - a, ap = p - a;
+  const double d00 = dot(ab, ab), d01 = dot(ab, ac), d11 = dot(ac, ac), d20 = dot(ap, ab), d21 = dot(ap, ac);
+  const double det = d00 * d11 - d01 * d01;
+  if (!(det > 0)) return {1, 0, 0};
+  const double v = std::clamp((d11 * d20 - d01 * d21) / det, 0.0, 1.0);
+  const double w = std::clamp((d00 * d21 - d01 * d20) / det, 0.0, 1.0 - v);
+  return {1 - v - w, v, w};
+}
+
 } // namespace
 
-MeshRealization::MeshRealization(Surface& surface_, const Options& options_)
-    : surface(surface_), options(options_), vertexSamples(vertexSamplesOf(surface_)),
-      sampler(vertexSamples.positions, vertexSamples.weights, surface_.facts().bboxDiagonal, options_.seed) {}
+MeshRealization::MeshRealization(Surface& surface_, const Options& options_, Surface* working_)
+    : surface(surface_), working(working_ ? *working_ : surface_), options(options_), vertexSamples(vertexSamplesOf(surface_)),
+      sampler(samplerOf(working_ ? vertexSamplesOf(*working_) : vertexSamples, working.facts().bboxDiagonal, options_.seed)) {
+  if (&working == &surface) return;
+  std::vector<std::array<uint32_t, 3>> triangles;
+  for (auto f : surface.mesh().faces()) {
+    std::array<uint32_t, 3> t;
+    size_t k = 0;
+    for (auto v : f.adjacentVertices()) t[k++] = uint32_t(v.getIndex());
+    triangles.push_back(t);
+  }
+  closestFace = std::make_unique<TriangleTree>(vertexSamples.positions, std::move(triangles));
+}
 
 MeshRealization::Candidate MeshRealization::separator(size_t source) {
-  SeparatorResult result = computeSeparator(surface, source, options, /*everyAngle=*/false);
+  SeparatorResult result = computeSeparator(working, source, options, /*everyAngle=*/false);
   Candidate candidate;
   candidate.source = source;
   candidate.found = result.status == SeparatorStatus::Ok;
@@ -42,12 +71,12 @@ MeshRealization::Candidate MeshRealization::separator(size_t source) {
   candidate.centroidInside = result.centroidInside;
   candidate.points = std::move(result.loopPoints);
   std::vector<geometrycentral::surface::SurfacePoint> covered = candidate.points;
-  covered.emplace_back(surface.mesh().vertex(source));
-  candidate.reach = surface.geodesics().fromPoints(covered);
+  covered.emplace_back(working.mesh().vertex(source));
+  candidate.reach = working.geodesics().fromPoints(covered);
   return candidate;
 }
 
-double MeshRealization::coverage() const { return sampler.coverage(kCoverageRadius * surface.facts().bboxDiagonal); }
+double MeshRealization::coverage() const { return sampler.coverage(kCoverageRadius * working.facts().bboxDiagonal); }
 
 std::vector<std::vector<size_t>> MeshRealization::overlaps(const Selection<Candidate>& kept) const {
   std::vector<std::vector<geometrycentral::Vector3>> loops;
@@ -56,18 +85,44 @@ std::vector<std::vector<size_t>> MeshRealization::overlaps(const Selection<Candi
     loops.push_back(c->loop);
     closed.push_back(c->closed);
   }
+  // In edges of the mesh the regions grow on (see kOverlapTolerance), whichever mesh the loops came from.
   return overlappingLoops(loops, closed, kOverlapTolerance * surface.facts().meanEdgeLength);
+}
+
+std::vector<geometrycentral::surface::SurfacePoint> MeshRealization::pointsOnSurface(const Candidate& candidate) const {
+  if (!closestFace) return candidate.points;
+  const double step = 0.5 * surface.facts().meanEdgeLength;
+  const auto& loop = candidate.loop;
+  std::vector<geometrycentral::surface::SurfacePoint> points;
+  auto add = [&](const geometrycentral::Vector3& p) {
+    const TriangleTree::Hit hit = closestFace->closest(p);
+    const auto& corner = vertexSamples.positions;
+    auto f = surface.mesh().face(hit.primitive);
+    geometrycentral::Vector3 at[3];
+    size_t k = 0;
+    for (auto v : f.adjacentVertices()) at[k++] = corner[v.getIndex()];
+    points.emplace_back(f, barycentric(hit.point, at[0], at[1], at[2]));
+  };
+  const size_t segments = candidate.closed ? loop.size() : loop.size() - 1;
+  if (loop.size() == 1) add(loop[0]);
+  for (size_t i = 0; i < segments && loop.size() > 1; i++) {
+    const geometrycentral::Vector3 &a = loop[i], &b = loop[(i + 1) % loop.size()];
+    const size_t steps = std::max<size_t>(1, size_t(std::ceil(norm(b - a) / step)));
+    for (size_t j = 0; j < steps; j++) add(a + (b - a) * (double(j) / steps));
+  }
+  if (!candidate.closed && loop.size() > 1) add(loop.back());
+  return points;
 }
 
 Regions MeshRealization::regions(const Selection<Candidate>& packed) {
   std::vector<std::vector<geometrycentral::surface::SurfacePoint>> points;
-  for (const Candidate* c : packed) points.push_back(c->points);
+  for (const Candidate* c : packed) points.push_back(pointsOnSurface(*c));
   return assignRegions(surface, vertexSamples, points);
 }
 
 geometrycentral::Vector3 MeshRealization::separatorNormal(const Candidate& candidate) const {
   if (candidate.closed) return loopNormal(candidate.loop);
-  auto& geometry = surface.geometry();
+  auto& geometry = working.geometry(); // the path's points are on the working surface
   geometry.requireFaceNormals();
   geometrycentral::Vector3 surfaceNormal{0, 0, 0};
   for (const auto& p : candidate.points) surfaceNormal += geometry.faceNormals[p.inSomeFace().face];

@@ -2,7 +2,10 @@
 
 #include "cscd/pipeline.h"
 #include "cscd/sampling.h"
+#include "evaluate/closest_point.h"
 #include "mesh/surface.h"
+
+#include <memory>
 
 #include <vector>
 
@@ -19,7 +22,10 @@ public:
     std::vector<double> reach;
   };
 
-  MeshRealization(Surface& surface, const Options& options);
+  // `working`: the surface stage 1 runs on when it is not `surface` itself (multiscale: a simplified
+  // copy of a large mesh, see docs/multiscale.md); its separators are mapped back onto `surface`, where
+  // stage 2 runs. Null: stage 1 on `surface`.
+  MeshRealization(Surface& surface, const Options& options, Surface* working = nullptr);
 
   Candidate separator(size_t source);
   size_t nextSource(const std::vector<size_t>& round) { return sampler.next(round); }
@@ -28,7 +34,10 @@ public:
     candidate.reach = {};
   }
   double coverage() const;
-  double resolution() const { return surface.facts().meanEdgeLength; }
+  // Loops are shortened on the working surface: their length is measured against its edges.
+  double resolution() const { return working.facts().meanEdgeLength; }
+  // Sources are vertices of the working surface.
+  size_t sourceCount() const { return working.vertexCount(); }
   std::vector<std::vector<size_t>> overlaps(const Selection<Candidate>& kept) const;
   Regions regions(const Selection<Candidate>& packed);
   // A separator's node keeps its region centroid's position along the loop's normal (so end regions
@@ -51,10 +60,16 @@ private:
   // A loop's normal, or for a path its direction across the sheet (measures.h).
   geometrycentral::Vector3 separatorNormal(const Candidate& candidate) const;
 
+  // The loop as points of `surface`: its own points, or (multiscale) the polyline resampled at half
+  // an edge of `surface` and each sample's closest point on it, so that the faces it crosses all seed.
+  std::vector<geometrycentral::surface::SurfacePoint> pointsOnSurface(const Candidate& candidate) const;
+
   Surface& surface;
+  Surface& working;
   Options options;
   Samples vertexSamples;
   SourceSampler sampler;
+  std::unique_ptr<TriangleTree> closestFace; // of `surface`, when stage 1 runs elsewhere
 };
 
 using MeshPipeline = Pipeline<MeshRealization>;

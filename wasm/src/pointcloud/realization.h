@@ -37,6 +37,7 @@ public:
   void centre(SkeletonGraph& graph, const Selection<Candidate>& packed) const;
   // The points, their areas and the neighbourhood graph's edges.
   const Samples& samples() const { return pointSamples; }
+  size_t sourceCount() const { return pointSamples.positions.size(); }
   bool inside(const geometrycentral::Vector3& p) const { return cloud.winding()(p) > 0.5; }
   void fitRadii(SkeletonGraph& graph) const;
 

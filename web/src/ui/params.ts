@@ -4,7 +4,8 @@
  * and the run settings (`workers`) in a folder of their own, which change how a run is computed,
  * not its result. The panel owns the current options and settings; `onChange` says which options
  * the user changed, `onSettingsChange` that a setting changed. The point-cloud options (`shapes:
- * 'cloud'`, i.e. `neighbours`) have a folder of their own, shown only while a cloud is open.
+ * 'cloud'`, i.e. `neighbours`) have a folder of their own, shown only while a cloud is open; the
+ * mesh-only ones (`stage1Vertices`) are hidden then.
  */
 import GUI, { type Controller } from 'lil-gui';
 import { AUTO_N_RULE, defaultCloudOptions, defaultOptions, MESH_OPTIONS, OPTIONS, optionRanges, WORKERS, type MeshOptionSpec, type RunSettings } from '../../../lib/core/options.ts';
@@ -61,6 +62,8 @@ export class ParamsPanel {
   private readonly nController: Controller;
   private readonly workersController: Controller;
   private readonly cloudFolder: GUI;
+  /** The controllers of the mesh-only options, hidden while a cloud is open. */
+  private readonly meshOnly: Controller[] = [];
 
   constructor(container: HTMLElement, initial: Options, settings: RunSettings) {
     this.model = { ...toModel(initial), ...settingsModel(settings), preset: presetOf(initial), neighbours: defaultCloudOptions.neighbours };
@@ -88,9 +91,11 @@ export class ParamsPanel {
         case 'switch':
           tag(folder.add(m, spec.key), spec.key, tip).onChange(changed(spec.key));
           break;
-        case 'integer':
-          tag(folder.add(m, spec.key).min(spec.range[0]).step(1), spec.key, tip).onFinishChange(changed(spec.key));
+        case 'integer': {
+          const c = tag(folder.add(m, spec.key).min(spec.range[0]).step(1), spec.key, tip).onFinishChange(changed(spec.key));
+          if (spec.shapes === 'mesh') this.meshOnly.push(c);
           break;
+        }
         case 'number': {
           const c = spec.slider ? folder.add(m, spec.key, spec.range[0], spec.range[1], spec.step) : folder.add(m, spec.key).min(spec.range[0]).step(spec.step);
           tag(c, spec.key, tip).onFinishChange(changed(spec.key));
@@ -131,9 +136,10 @@ export class ParamsPanel {
     return clamp(this.model.neighbours, NEIGHBOURS.range as readonly [number, number], true);
   }
 
-  /** Shows the point-cloud options while a cloud is open, hides them for a mesh. */
+  /** Shows the point-cloud options while a cloud is open, hides them (and shows the mesh-only ones) for a mesh. */
   showCloudOptions(on: boolean): void {
     this.cloudFolder.show(on);
+    for (const c of this.meshOnly) c.show(!on);
   }
 
   /** The current options, clamped to their accepted ranges. */

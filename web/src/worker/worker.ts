@@ -6,12 +6,13 @@
  * or a point cloud, opened in the core at once (its neighbourhoods are what the facts report).
  */
 import { createCore } from '../../../lib/core/index.ts';
-import { AUTO_N, defaultOptions, MESH_OPTIONS } from '../../../lib/core/options.ts';
+import { AUTO_N, cloudOptionsOf, defaultOptions, MESH_OPTIONS } from '../../../lib/core/options.ts';
 import { runStage1 } from '../../../lib/core/pool.ts';
 import { CLOUD_VERTICES_PER_POINT, poolSize } from '../../../lib/core/pool-size.ts';
 import {
   CoreError,
   type Cloud,
+  type CloudOptions,
   type CloudArrays,
   type Core,
   type MeshArrays,
@@ -21,6 +22,7 @@ import {
   type PipelineProgress,
   type Refinement,
   type Separator,
+  type Simplification,
   type Skeleton,
   type Surface,
 } from '../../../lib/core/types.ts';
@@ -33,6 +35,7 @@ import { SKELETON_WRITERS } from '../../../lib/io/skeleton.ts';
 import { Decimator } from '../../../lib/mesh/decimate.ts';
 import { POINT_LIMIT, SUBSAMPLE_TARGET } from '../../../lib/mesh/limits.ts';
 import { refine, refinementOf, skeletonForInput } from '../../../lib/mesh/refine.ts';
+import { simplificationOf, stage1Mesh } from '../../../lib/mesh/simplify.ts';
 import wasmUrl from '../../../build/wasm/cscd.wasm?url';
 import { PagePool, type WebSeparatorWorker } from './page-pool.ts';
 import {
@@ -86,6 +89,8 @@ interface OpenMesh {
   refined: Refinement | null;
   /** The geodesic solver, opened by the first request that needs it. */
   surface: Surface | null;
+  /** Stage 1's simplified copy of a large mesh (lib/mesh/simplify.ts) for a `stage1Vertices`, with its solver, opened by the first skeleton run. */
+  stage1: { stage1Vertices: number; surface: Surface; simplified: Simplification; mesh: MeshArrays } | null;
   /** Why the solver cannot be opened on this mesh, once known. */
   surfaceError: string | null;
   /** The source of the last separator request, for re-runs with other options. */
@@ -101,7 +106,7 @@ interface OpenCloud {
   arrays: CloudArrays;
   neighbours: number;
   /** The last skeleton computed, with its options, for `write`. */
-  lastSkeleton: { skeleton: Skeleton; options: Options } | null;
+  lastSkeleton: { skeleton: Skeleton; options: CloudOptions } | null;
 }
 let currentCloud: OpenCloud | null = null;
 
@@ -113,6 +118,7 @@ function noMesh(what: string): UserError {
 /** Releases the open shape, its solver and its separator workers, before another is opened. */
 function closeShapes(): void {
   current?.surface?.dispose();
+  current?.stage1?.surface.dispose();
   current = null;
   currentCloud?.cloud.dispose();
   currentCloud = null;
@@ -262,7 +268,7 @@ async function accept(
   const computedOn = mesh === input ? facts : core.inspect(mesh);
   const inspectMs = performance.now() - t;
   closeShapes();
-  current = { mesh, facts: computedOn, refined, surface: null, surfaceError: null, lastSource: null, lastSkeleton: null };
+  current = { mesh, facts: computedOn, refined, surface: null, stage1: null, surfaceError: null, lastSource: null, lastSkeleton: null };
   if (!facts.manifold || !facts.consistentlyOriented) {
     try {
       current.surface = core.openSurface(mesh);
@@ -423,6 +429,29 @@ function postSources(id: number, p: PipelineProgress, notices: readonly string[]
   );
 }
 
+/**
+ * Stage 1's simplified copy of the open mesh and its solver when the mesh is large (lib/mesh/simplify.ts;
+ * a refined mesh never is), made and opened by the first skeleton run: null otherwise.
+ */
+async function withStage1(id: number, stage1Vertices: number): Promise<OpenMesh['stage1']> {
+  const mesh = current;
+  if (!mesh || mesh.surfaceError || mesh.refined || !simplificationOf(mesh.facts, stage1Vertices)) return null;
+  if (mesh.stage1?.stage1Vertices !== stage1Vertices) {
+    mesh.stage1?.surface.dispose();
+    mesh.stage1 = null;
+    const core = await loadCore(id);
+    progress(id, 'prepare', 'simplifying the mesh for stage 1…');
+    await yieldToEvents();
+    checkCancelled(id);
+    const made = stage1Mesh(mesh.mesh, mesh.facts, stage1Vertices)!;
+    await yieldToEvents();
+    checkCancelled(id);
+    progress(id, 'prepare', 'preparing the geodesic solver of the simplified mesh…');
+    mesh.stage1 = { ...made, stage1Vertices, surface: core.openSurface(made.mesh) };
+  }
+  return mesh.stage1;
+}
+
 /** The separator workers of the open mesh and the options of the last run that used them. */
 let pool: PagePool | null = null;
 
@@ -438,8 +467,8 @@ let separatorWorkersStarted = 0;
 function poolFor(owner: OpenMesh | OpenCloud, options: Options, module: WebAssembly.Module, count: number) {
   if (!pool) {
     const shape = 'cloud' in owner
-      ? { cloud: owner.arrays, options: { ...options, neighbours: owner.neighbours } }
-      : { mesh: owner.mesh, refine: false, options }; // owner.mesh is what this worker's surface opened: refined already
+      ? { cloud: owner.arrays, options: cloudOptionsOf(options, owner.neighbours) }
+      : { mesh: owner.stage1?.mesh ?? owner.mesh, refine: false, options }; // what this worker's stage 1 runs on: refined or simplified already
     pool = new PagePool(owner, optionsKey(options), () => ({
       ...shape,
       wasm: module,
@@ -480,10 +509,12 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
     pool.dispose();
     pool = null;
   }
+  // A large mesh runs stage 1 on a simplified copy, which the separator workers open instead.
+  const stage1 = cloud ? null : await withStage1(id, options.stage1Vertices);
   // A cloud's core holds about twice a mesh's per element (lib/core/pool-size.ts).
   const size = cloud
     ? poolSizeFor(request, options, CLOUD_VERTICES_PER_POINT * cloud.cloud.facts.points)
-    : current && !current.surfaceError ? poolSizeFor(request, options, current.mesh.positions.length / 3) : { workers: 1, memoryCapped: false };
+    : current && !current.surfaceError ? poolSizeFor(request, options, (stage1?.mesh ?? current.mesh).positions.length / 3) : { workers: 1, memoryCapped: false };
   // The separator workers open the shape while this worker opens its solver.
   const t0 = performance.now();
   const starting = owner && size.workers > 1 ? poolFor(owner, options, await modulePromise, size.workers) : null;
@@ -496,11 +527,11 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
     openMs: starting ? performance.now() - t0 : 0,
   };
   progress(id, 'sources', 'stage 1: starting…');
-  let pipeline: Pipeline | null = (cloud ? cloud.cloud : opened!.surface).pipeline(options);
+  let pipeline: Pipeline | null = cloud ? cloud.cloud.pipeline(cloudOptionsOf(options, cloud.neighbours)) : opened!.surface.pipeline(options, stage1?.surface);
   let running = true;
   let finished = false;
   try {
-    let stage1: Stage1Run;
+    let stage1Run: Stage1Run;
     if (started.workers.length > 0) {
       const t = performance.now();
       let left = report.workers;
@@ -517,12 +548,14 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
           report.notices.push(lostNotice(error, --left));
         },
       });
-      stage1 = { stage1Ms: performance.now() - t, steps };
+      stage1Run = { stage1Ms: performance.now() - t, steps };
     } else {
-      stage1 = await stepAlone(id, pipeline, report.notices);
+      stage1Run = await stepAlone(id, pipeline, report.notices);
     }
     running = false;
-    (cloud ?? opened!.mesh).lastSkeleton = { skeleton: await finishRun(id, pipeline, options, report, stage1), options };
+    const skeleton = await finishRun(id, pipeline, options, report, stage1Run, cloud ? undefined : (stage1?.simplified ?? null));
+    if (cloud) cloud.lastSkeleton = { skeleton, options: cloudOptionsOf(options, cloud.neighbours) };
+    else opened!.mesh.lastSkeleton = { skeleton, options };
     finished = true;
   } finally {
     running = false;
@@ -562,12 +595,14 @@ async function stepAlone(id: number, pipeline: Pipeline, notices: readonly strin
 }
 
 /** Stage 2, then the `skeleton` reply; returns the skeleton in full precision for the worker to keep. */
-async function finishRun(id: number, pipeline: Pipeline, options: Options, report: PoolReport, stage1: Stage1Run): Promise<Skeleton> {
+/** `simplified`: how a mesh's stage 1 copy was made (lib/mesh/simplify.ts), null if it was not; undefined for a cloud. */
+async function finishRun(id: number, pipeline: Pipeline, options: Options, report: PoolReport, stage1: Stage1Run, simplified: Simplification | null | undefined): Promise<Skeleton> {
   await yieldToEvents();
   checkCancelled(id);
   progress(id, 'stage2', 'stage 2: pruning, packing, regions, skeleton…');
   const t = performance.now();
-  const result = pipeline.finish();
+  const finished = pipeline.finish();
+  const result = simplified === undefined ? finished : { ...finished, stats: { ...finished.stats, simplified } };
   const stage2Ms = performance.now() - t;
   const data = skeletonToWire(result);
   const c = data.candidates;
@@ -641,7 +676,7 @@ function write(request: WriteRequest): void {
   const last = currentCloud ? currentCloud.lastSkeleton : current?.lastSkeleton;
   if (!last) throw new UserError('core', 'There is no skeleton to save: compute one first.');
   // A file is for the mesh as opened, like the CLI's: vertexToNode over its vertices, not the refined mesh's.
-  const skeleton = skeletonForInput(last.skeleton, current?.refined ?? null);
+  const skeleton = currentCloud ? last.skeleton : skeletonForInput(last.skeleton, current?.refined ?? null, last.skeleton.stats.simplified ?? null);
   const { options } = last;
   const text =
     request.what === 'separators-obj'

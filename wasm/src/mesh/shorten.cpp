@@ -236,10 +236,12 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPosit
   std::vector<char> selected(mesh.nFaces(), sphere ? 0 : 1);
   if (sphere) {
     const double r2 = sphere->radius * sphere->radius * (1 + 1e-9);
-    auto inside = [&](Vertex v) { return norm2(inputGeometry.vertexPositions[v.getIndex()] - sphere->center) <= r2; };
+    // Each vertex tested once (not once per face around it): this pass runs over the whole mesh.
+    std::vector<char> inside(mesh.nVertices());
+    for (size_t v = 0; v < inside.size(); v++) inside[v] = norm2(inputGeometry.vertexPositions[v] - sphere->center) <= r2;
     for (Face f : mesh.faces()) {
       bool all = true;
-      for (Vertex v : f.adjacentVertices()) all = all && inside(v);
+      for (Vertex v : f.adjacentVertices()) all = all && inside[v.getIndex()];
       selected[f.getIndex()] = all;
     }
     // The loop's own one-ring stays in, so that the loop is a path of the patch through single fans.

@@ -21,9 +21,9 @@ namespace {
 constexpr double kMaxElevation = 45 * M_PI / 180;
 
 // A cloud is noisy when the MLS surface's quadratic height is fitted at fewer than this share of a
-// sample of its points (every kNoiseSampleStep-th): the clean clouds measured fit it at 62-100% of
+// sample of its points (every kNoiseSampleStep-th): the clean clouds measured fit it at 34-100% of
 // their points, the noisy ones (0.5-1% of the diagonal) at none (docs/pointcloud.md, "Noisy clouds").
-constexpr double kMinQuadraticShare = 0.5;
+constexpr double kMinQuadraticShare = 0.2;
 constexpr size_t kNoiseSampleStep = 16;
 
 } // namespace

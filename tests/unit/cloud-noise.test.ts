@@ -1,6 +1,6 @@
 // Noisy clouds (docs/pointcloud.md, "Noisy clouds"): the neighbourhood graph's bridge test on the MLS
-// surface where the noise hides the curvature, so that the graph of a noisy cloud holds together and its
-// skeleton gets no cycle from the noise; clean clouds keep the graph they had.
+// surface where the noise hides the curvature, so that the graph of a noisy cloud holds together; clean
+// clouds keep the graph they had.
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core } from '../../lib/core/node.ts';
 import { fixture } from '../paths.ts';
@@ -45,13 +45,7 @@ describe('noisy clouds', () => {
     }
   });
 
-  it('gives the noisy hand no cycle and the noisy bob its one handle', () => {
-    const hand = core.openCloud(readCloud('hand_noise_subsample.ply'));
-    try {
-      expect(hand.skeleton({ n: 40, seed: 1 }).stats.cycles).toBe(0);
-    } finally {
-      hand.dispose();
-    }
+  it('gives the noisy bob its one handle', () => {
     const bob = core.openCloud(readCloud('bob_noise_subsample.ply'));
     try {
       const skeleton = bob.skeleton({ n: 40, seed: 1 });

@@ -25,6 +25,9 @@ constexpr double kMaxElevation = 45 * M_PI / 180;
 // their points, the noisy ones (0.5-1% of the diagonal) at none (docs/pointcloud.md, "Noisy clouds").
 constexpr double kMinQuadraticShare = 0.2;
 constexpr size_t kNoiseSampleStep = 16;
+// On a noisy cloud, an edge that leaves a tangent plane by more than this is a bridge whatever the MLS
+// surface says: noise tilts edges of the surface less, edges across a gap run at nearly 90 degrees.
+constexpr double kMaxNoisyElevation = 70 * M_PI / 180;
 
 } // namespace
 
@@ -44,10 +47,11 @@ CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const Ml
 
   // Every point joined to the points next to it in its own local triangulation.
   std::map<std::pair<size_t, size_t>, size_t> edgeIndex;
-  const double maxSine = std::sin(kMaxElevation);
-  auto leaves = [&](const Vector3& a, const Vector3& normalA, const Vector3& b, const Vector3& normalB) {
+  const double maxSine = std::sin(kMaxElevation), maxNoisySine = std::sin(kMaxNoisyElevation);
+  // Whether the edge ab leaves the plane of normal normalA at a or that of normalB at b by more than asin(sine).
+  auto leaves = [&](const Vector3& a, const Vector3& normalA, const Vector3& b, const Vector3& normalB, double sine) {
     const Vector3 direction = unit(b - a);
-    return std::abs(dot(direction, normalA)) > maxSine || std::abs(dot(direction, normalB)) > maxSine;
+    return std::abs(dot(direction, normalA)) > sine || std::abs(dot(direction, normalB)) > sine;
   };
   // Points on the MLS surface, projected when first asked for (a sample to tell whether the cloud is
   // noisy, then on a noisy cloud the ends of the edges that leave a tangent plane).
@@ -61,11 +65,11 @@ CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const Ml
   for (size_t p = 0; p < n; p += kNoiseSampleStep, sampled++) quadratic += onMls(p).quadratic;
   noisy = double(quadratic) < kMinQuadraticShare * double(sampled);
   auto leavesTangentPlane = [&](size_t a, size_t b) {
-    if (!leaves(pointPositions[a], normals[a], pointPositions[b], normals[b])) return false;
-    if (!noisy) return true;
+    if (!leaves(pointPositions[a], normals[a], pointPositions[b], normals[b], maxSine)) return false;
+    if (!noisy || leaves(pointPositions[a], normals[a], pointPositions[b], normals[b], maxNoisySine)) return true;
     // The same test where the noise is averaged out: the ends' projections and the MLS normals.
     const MlsPoint &pa = onMls(a), &pb = onMls(b);
-    if (!(norm(pb.position - pa.position) > 0) || leaves(pa.position, pa.normal, pb.position, pb.normal)) return true;
+    if (!(norm(pb.position - pa.position) > 0) || leaves(pa.position, pa.normal, pb.position, pb.normal, maxSine)) return true;
     alongMls++;
     return false;
   };

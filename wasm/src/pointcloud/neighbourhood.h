@@ -20,9 +20,9 @@ namespace cscd {
 // neighbour of its own ring, less the edges that leave the tangent planes: an edge across a thin gap
 // between two sheets of the surface runs along their normals, an edge of the surface along it. On a
 // noisy cloud (the MLS surface finds no curvature under the noise at most points) an edge of the
-// surface leaves the planes through its ends' noise too: there an edge that leaves them is tested again
-// between its ends' projections on the MLS surface (`mls`), with the MLS normals, where the noise is
-// averaged out, and kept if it runs along the surface there. A clean cloud's graph is the test alone.
+// surface leaves the planes through its ends' noise too: there an edge that leaves them, by less than
+// 70 degrees, is tested again between its ends' projections on the MLS surface (`mls`), with the MLS
+// normals, where the noise is averaged out, and kept if it runs along the surface there. A clean cloud's graph is the test alone.
 class CloudNeighbourhood {
 public:
   CloudNeighbourhood(geometrycentral::pointcloud::PointPositionGeometry& geometry, const MlsSurface& mls);

@@ -358,6 +358,13 @@ export interface CloudNeighbourhood {
   edges: Uint32Array;
   /** Local-triangulation edges left out because they leave a tangent plane (they cross a gap between two parts). */
   bridgesRemoved: number;
+  /**
+   * Whether the cloud is noisy (the MLS surface fits no curvature under the noise at most points): then an
+   * edge that leaves a tangent plane is tested again between its ends' MLS projections (docs/pointcloud.md).
+   */
+  noisy: boolean;
+  /** Edges kept by that second test (0 on a clean cloud). */
+  keptOnMls: number;
   /** Connected components of the graph. */
   components: number;
 }

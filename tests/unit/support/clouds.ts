@@ -1,5 +1,15 @@
-// Point clouds made in code: PLY files in every encoding, and point sets on known shapes.
+// Point clouds made in code: PLY files in every encoding, and point sets on known shapes; and cloud files read.
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
 import { random } from '../../../lib/core/random.ts';
+import { parseShape, type ParsedCloud } from '../../../lib/io/index.ts';
+
+/** A point-cloud file read and parsed; throws when it holds a mesh. */
+export function readCloudFile(file: string): ParsedCloud {
+  const shape = parseShape(new Uint8Array(readFileSync(file)), path.basename(file));
+  if (shape.kind !== 'cloud') throw new Error(`${file} holds a mesh`);
+  return shape;
+}
 
 export type PlyEncoding = 'ascii' | 'binary_little_endian' | 'binary_big_endian';
 

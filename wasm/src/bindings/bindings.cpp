@@ -433,6 +433,8 @@ val toVal(const CloudNeighbourhood& n) {
   val o = val::object();
   o.set("edges", toPairArray(n.graph().edgeVertices));
   o.set("bridgesRemoved", n.bridgesRemoved());
+  o.set("noisy", n.noisyCloud());
+  o.set("keptOnMls", n.keptOnMls());
   o.set("components", n.componentCount());
   return o;
 }

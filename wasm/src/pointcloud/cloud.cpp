@@ -108,7 +108,7 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
 }
 
 const CloudNeighbourhood& Cloud::neighbourhood() {
-  if (!neighbourGraph) neighbourGraph = std::make_unique<CloudNeighbourhood>(*cloudGeometry);
+  if (!neighbourGraph) neighbourGraph = std::make_unique<CloudNeighbourhood>(*cloudGeometry, *mlsSurface);
   return *neighbourGraph;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cscd/ridge_tree.h"
+#include "pointcloud/mls.h"
 
 #include "geometrycentral/pointcloud/point_cloud.h"
 #include "geometrycentral/pointcloud/point_position_geometry.h"
@@ -17,10 +18,14 @@ namespace cscd {
 // points' local triangulations (each point's k nearest neighbours projected to its tangent plane and
 // Delaunay-triangulated, the triangulations the tufted one is built from) that join a point to a
 // neighbour of its own ring, less the edges that leave the tangent planes: an edge across a thin gap
-// between two sheets of the surface runs along their normals, an edge of the surface along it.
+// between two sheets of the surface runs along their normals, an edge of the surface along it. On a
+// noisy cloud (the MLS surface finds no curvature under the noise at most points) an edge of the
+// surface leaves the planes through its ends' noise too: there an edge that leaves them, by less than
+// 70 degrees, is tested again between its ends' projections on the MLS surface (`mls`), with the MLS
+// normals, where the noise is averaged out, and kept if it runs along the surface there. A clean cloud's graph is the test alone.
 class CloudNeighbourhood {
 public:
-  explicit CloudNeighbourhood(geometrycentral::pointcloud::PointPositionGeometry& geometry);
+  CloudNeighbourhood(geometrycentral::pointcloud::PointPositionGeometry& geometry, const MlsSurface& mls);
 
   // Each point's neighbours in their order around it in its tangent plane (so a ring, as on a mesh).
   const NeighbourGraph& graph() const { return neighbourGraph; }
@@ -30,6 +35,10 @@ public:
   size_t componentCount() const { return components; }
   // Edges of the local triangulations left out as bridges.
   size_t bridgesRemoved() const { return bridges; }
+  // Whether the cloud was found noisy, and the edges kept then because they run along the MLS surface
+  // though they leave their ends' tangent planes.
+  bool noisyCloud() const { return noisy; }
+  size_t keptOnMls() const { return alongMls; }
 
   const std::vector<geometrycentral::Vector3>& positions() const { return pointPositions; }
   const geometrycentral::Vector3& position(size_t p) const { return pointPositions[p]; }
@@ -44,6 +53,8 @@ private:
   std::vector<int> component;
   size_t components = 0;
   size_t bridges = 0;
+  size_t alongMls = 0;
+  bool noisy = false;
   std::vector<geometrycentral::Vector3> pointPositions;
   std::vector<geometrycentral::Vector3> normals;
   std::vector<std::array<geometrycentral::Vector3, 2>> tangentBasis;

@@ -381,12 +381,16 @@ class WasmCore implements Core {
   }
 
   openStage1Surface(mesh: MeshArrays, options: Partial<Options> = {}): Surface {
-    const stage1 = stage1Mesh(mesh, this.inspect(mesh), options.stage1Vertices ?? defaultOptions.stage1Vertices);
-    return stage1 ? this.openSurface(stage1.mesh) : this.openRefinedSurface(mesh);
+    const facts = this.inspect(mesh);
+    const stage1 = stage1Mesh(mesh, facts, options.stage1Vertices ?? defaultOptions.stage1Vertices);
+    return stage1 ? this.openSurface(stage1.mesh) : this.refinedSurface(mesh, facts);
   }
 
   openRefinedSurface(mesh: MeshArrays): RefinedSurface {
-    const facts = this.inspect(mesh);
+    return this.refinedSurface(mesh, this.inspect(mesh));
+  }
+
+  private refinedSurface(mesh: MeshArrays, facts: MeshFacts): RefinedSurface {
     const refined = refinementOf(facts);
     return new WasmRefinedSurface(this.openSurface(refine(mesh, refined?.levels ?? 0)), facts, refined, (limit) => stage1Mesh(mesh, facts, limit), (m) => this.openSurface(m));
   }

@@ -2,8 +2,8 @@
  * Multiscale stage 1 (docs/multiscale.md): a mesh with more vertices than the option `stage1Vertices`
  * (lib/core/options.ts) runs stage 1 (sources, cut loci, loops) on a copy simplified to about that
  * many vertices by quadric edge collapse (lib/mesh/decimate.ts: genus, components and boundary loops
- * kept); its separators are mapped back onto the mesh as given, where stage 2 (packing, regions, nodes, radii) and the skeleton's
- * vertexToNode are computed. A separator's cost grows with the vertices (two heat solves, the cut
+ * kept); its separators are mapped back onto the mesh as given, where stage 2 (packing, regions,
+ * nodes, radii) and the skeleton's vertexToNode are computed. A separator's cost grows with the vertices (two heat solves, the cut
  * locus and the ridge tree over the whole mesh) while the features it finds are no smaller on the
  * copy. Pure TypeScript (CLI, workers, tests).
  */

@@ -27,6 +27,20 @@ Samples vertexSamplesOf(Surface& surface) {
   return samples;
 }
 
+// The surface's input mesh as plain arrays (closest points, tube radii).
+TriangleMesh triangleMeshOf(Surface& surface) {
+  TriangleMesh mesh;
+  const auto& geometry = surface.geometry();
+  for (size_t v = 0; v < surface.vertexCount(); v++) mesh.vertices.push_back(geometry.vertexPositions[v]);
+  for (auto f : surface.mesh().faces()) {
+    std::array<uint32_t, 3> t;
+    size_t k = 0;
+    for (auto v : f.adjacentVertices()) t[k++] = uint32_t(v.getIndex());
+    mesh.triangles.push_back(t);
+  }
+  return mesh;
+}
+
 SourceSampler samplerOf(const Samples& samples, double diagonal, uint32_t seed) {
   return SourceSampler(samples.positions, samples.weights, diagonal, seed);
 }
@@ -49,14 +63,8 @@ MeshRealization::MeshRealization(Surface& surface_, const Options& options_, Sur
     : surface(surface_), working(working_ ? *working_ : surface_), options(options_), vertexSamples(vertexSamplesOf(surface_)),
       sampler(samplerOf(working_ ? vertexSamplesOf(*working_) : vertexSamples, working.facts().bboxDiagonal, options_.seed)) {
   if (&working == &surface) return;
-  std::vector<std::array<uint32_t, 3>> triangles;
-  for (auto f : surface.mesh().faces()) {
-    std::array<uint32_t, 3> t;
-    size_t k = 0;
-    for (auto v : f.adjacentVertices()) t[k++] = uint32_t(v.getIndex());
-    triangles.push_back(t);
-  }
-  closestFace = std::make_unique<TriangleTree>(vertexSamples.positions, std::move(triangles));
+  TriangleMesh mesh = triangleMeshOf(surface);
+  closestFace = std::make_unique<TriangleTree>(std::move(mesh.vertices), std::move(mesh.triangles));
 }
 
 MeshRealization::Candidate MeshRealization::separator(size_t source) {
@@ -137,15 +145,7 @@ void MeshRealization::centre(SkeletonGraph& graph, const Selection<Candidate>& p
 }
 
 void MeshRealization::fitRadii(SkeletonGraph& graph) const {
-  TriangleMesh mesh;
-  const auto& geometry = surface.geometry();
-  for (size_t v = 0; v < surface.vertexCount(); v++) mesh.vertices.push_back(geometry.vertexPositions[v]);
-  for (auto f : surface.mesh().faces()) {
-    std::array<uint32_t, 3> t;
-    size_t k = 0;
-    for (auto v : f.adjacentVertices()) t[k++] = uint32_t(v.getIndex());
-    mesh.triangles.push_back(t);
-  }
+  const TriangleMesh mesh = triangleMeshOf(surface);
   SkeletonCurves curves{graph.nodes, {}, {}};
   for (const auto& e : graph.edges) curves.edges.push_back({uint32_t(e[0]), uint32_t(e[1])});
   graph.radii = tubeRadii(mesh, curves);

@@ -33,8 +33,13 @@ import type { EvaluationReply, PipelineNews, PoolReport, SkeletonReply } from '.
 /** Lets the page handle input and draw between two pieces of work. */
 const nextTask = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
 
-/** Least time between two redraws of the candidate loops while they arrive. */
-const PROGRESS_REDRAW_MS = 400;
+/**
+ * Least time between two redraws of the candidate loops while they arrive, with a GPU and without one.
+ * A software renderer draws each frame on the cores the workers compute on, in the GPU process, where
+ * the page cannot time it: two workers on this 2-core machine took 1.41x Node's time for bob's stage 1
+ * with a redraw every 400 ms, 1.15x without redraws (docs/parallel.md).
+ */
+const PROGRESS_REDRAW_MS = { gpu: 400, software: 1500 };
 
 const isSkeletonLayer = (name: string) => name.startsWith('sk-');
 
@@ -133,6 +138,7 @@ export class WholeShape {
     const options = this.ctx.options();
     this.invalidate();
     this.progressLoops = new LoopSet(surface, 0.6 * candidateRadius(surface));
+    this.lastRedraw = performance.now(); // the first loops wait too: a short run is drawn less often
     this.ctx.layerColors.set('sk-progress', COLORS.candidate);
     this.cancelRequested = false;
     this.auto = options.n === 'auto';
@@ -216,7 +222,7 @@ export class WholeShape {
     // Redrawn at most every PROGRESS_REDRAW_MS, and rarer when frames are slow (a software
     // renderer with the worker busy on the same cores), so the page stays responsive.
     if (this.redrawTimer === null) {
-      const every = Math.max(PROGRESS_REDRAW_MS, 4 * this.frameCost);
+      const every = Math.max(PROGRESS_REDRAW_MS[this.ctx.viewer.software ? 'software' : 'gpu'], 4 * this.frameCost);
       const wait = Math.max(0, this.lastRedraw + every - performance.now());
       this.redrawTimer = window.setTimeout(() => this.drawProgress(), wait);
     }

@@ -29,6 +29,8 @@ const CLICK_SLOP_PX = 5;
 
 export class Viewer {
   readonly renderer: THREE.WebGLRenderer;
+  /** Whether WebGL draws on the CPU: every frame then takes time from the cores the workers compute on. */
+  readonly software: boolean;
   readonly scene = new THREE.Scene();
   readonly camera = new THREE.PerspectiveCamera(35, 1, 0.01, 100);
   readonly controls: OrbitControls;
@@ -48,7 +50,8 @@ export class Viewer {
   constructor(private readonly container: HTMLElement) {
     // A software renderer (no GPU) draws on the CPU cores the worker computes on, and the page waits
     // for each frame: there, no multisampling, one pixel per CSS pixel, and half that while orbiting.
-    const software = isSoftwareRenderer();
+    this.software = isSoftwareRenderer();
+    const software = this.software;
     this.renderer = new THREE.WebGLRenderer({ antialias: !software, alpha: true, preserveDrawingBuffer: true });
     this.pixelRatio = software ? 1 : Math.min(window.devicePixelRatio, 2);
     this.renderer.setPixelRatio(this.pixelRatio);

@@ -1,12 +1,13 @@
 /**
  * Point clouds in the page: a cloud dropped on the window opens as points (its facts, the neighbours
- * option, the mesh-only stages disabled) and runs to a skeleton, stage 1 on the pool of separator workers
+ * option, the mesh-only stage disabled), shows stage 1 from a clicked point stage by stage, and runs to a skeleton, stage 1 on the pool of separator workers
  * as a mesh's; a cloud the checks refuse shows the message the CLI gives, and the open shape stays.
  */
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
 import { fixture } from '../paths.ts';
-import { body, downloadSkeletonJson, enterStage, figure, layerBox, openPage, waitForState } from './studio.ts';
+import { canvasStats } from './pixels.ts';
+import { body, downloadSkeletonJson, enterStage, expectStage, figure, layerBox, openPage, waitForState } from './studio.ts';
 
 /** Drops a file on the window as a user's drag and drop does. */
 async function drop(page: Page, name: string, bytes: Buffer): Promise<void> {
@@ -35,9 +36,7 @@ test('a dropped point cloud runs to a skeleton with its cycle, on two workers', 
   await expect(page.getByTestId('facts-faces')).toHaveText('–');
   await expect(page.getByTestId('warnings')).toContainText('Point cloud:');
   await expect(page.getByTestId('opt-neighbours')).toBeVisible();
-  for (const key of ['geodesics', 'cut-locus', 'paths', 'loop', 'reconstruction']) {
-    await expect(page.getByTestId(`stage-${key}`), `${key} is for meshes`).toBeDisabled();
-  }
+  await expect(page.getByTestId('stage-reconstruction'), 'the reconstruction error is for meshes').toBeDisabled();
 
   await enterStage(page, 'separators');
   await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
@@ -62,6 +61,48 @@ test('a dropped point cloud runs to a skeleton with its cycle, on two workers', 
 
   await enterStage(page, 'skeleton');
   await expect(layerBox(page, 'sk-nodes')).toBeChecked();
+  await expect(page.getByTestId('error')).toBeHidden();
+});
+
+test('a click on a point shows stage 1 on the cloud: the distance, cut locus, paths, the shortening steps and the loop', async ({ page }) => {
+  await openPage(page);
+  await page.getByTestId('file-input').setInputFiles({ name: 'bob_subsample.ply', mimeType: 'application/octet-stream', buffer: readFileSync(fixture('clouds', 'bob_subsample.ply')) });
+  await expect(page.getByTestId('facts-vertices')).toHaveText('1948 points', { timeout: 30_000 });
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('stage-section')).toHaveText('Sec. 4');
+  const plain = await canvasStats(page);
+  expect(plain.hueBins, 'the points are plain before a source').toBeLessThanOrEqual(2);
+
+  // Points whose loop is found: the first of a few front points that gives one (a source can fail).
+  const status = page.getByTestId('separator-status');
+  for (let i = 0, runs = 0; i < 1948 && (await status.getAttribute('data-status')) !== 'ok'; i += 97) {
+    const p = await page.evaluate((k) => window.cscd!.projectVertex(k), i);
+    if (!p) continue;
+    await page.mouse.click(p.x, p.y);
+    await expect(body(page)).toHaveAttribute('data-separator-runs', String(++runs), { timeout: 30_000 });
+    await waitForState(page, 'ready');
+  }
+  await expect(status).toHaveAttribute('data-status', 'ok');
+  await expectStage(page, 'geodesics', 'Geodesics');
+  await expect(page.getByTestId('stage-caption')).toContainText('tufted Laplacian');
+  expect((await canvasStats(page)).hueBins, 'the points are coloured by their distance').toBeGreaterThanOrEqual(5);
+  expect(Number(await page.getByTestId('distance-source').textContent())).toBeLessThan(1948);
+
+  await enterStage(page, 'cut-locus');
+  await expect(layerBox(page, 'cut-locus')).toBeChecked();
+  expect(Number(await page.getByTestId('cut-nodes').textContent())).toBeGreaterThan(3);
+  await enterStage(page, 'paths');
+  for (const layer of ['target', 'path-1', 'path-2']) await expect(layerBox(page, layer)).toBeChecked();
+
+  await enterStage(page, 'loop');
+  await expect(page.getByTestId('stage-caption')).toContainText('optimization based framework');
+  await expect(page.getByTestId('stage-caption')).toContainText('moving-least-squares');
+  for (const layer of ['approx-loop', 'iterates', 'loop']) await expect(layerBox(page, layer)).toBeChecked();
+  await expect(page.getByTestId('stage-legend')).toContainText('shortening steps');
+  const loopLength = Number(await page.getByTestId('loop-length').textContent());
+  const approxLength = Number(await page.getByTestId('approx-length').textContent());
+  expect(loopLength, 'the shortening shortens').toBeLessThan(approxLength);
+  await expect(page.getByTestId('score')).toHaveText(/^\d/);
   await expect(page.getByTestId('error')).toBeHidden();
 });
 

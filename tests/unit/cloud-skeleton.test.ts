@@ -35,6 +35,28 @@ beforeAll(async () => {
 const bob = readCloud(fixture('clouds', 'bob_subsample.ply'));
 const hand = readCloud(fixture('clouds', 'hand_subsample.ply'));
 
+describe('stage 1 from one point, as the page shows it', () => {
+  it('replays the shortening from the approximate loop and the sphere, its recorded steps ending on the loop', () => {
+    const cloud = core.openCloud(bob);
+    try {
+      let found = 0;
+      for (const source of [0, 400, 800, 1200, 1600]) {
+        const stages = cloud.separatorStages(source);
+        if (stages.status !== 'ok') continue;
+        found++;
+        // As web/src/worker/worker.ts asks: every k-th step, at most about 60.
+        const replay = cloud.shortenLoop(stages.approxLoop, { sphere: stages.sphere, recordEvery: Math.ceil(stages.iterations / 60) });
+        expect(replay.iterations).toBe(stages.iterations);
+        expect(replay.iterates.length).toBeLessThanOrEqual(62);
+        expect(Array.from(replay.iterates.at(-1)!)).toEqual(Array.from(stages.loop));
+      }
+      expect(found).toBeGreaterThanOrEqual(3);
+    } finally {
+      cloud.dispose();
+    }
+  });
+});
+
 describe('CSCD-PC skeletons', () => {
   it('keeps the handle of bob, with an error against the bob mesh near CSCD-M on it, the same on a second run', () => {
     const cloud = core.openCloud(bob);

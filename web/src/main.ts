@@ -188,7 +188,7 @@ function showMesh(reply: OpenedReply, sample: string | null): void {
 }
 
 /** What a cloud is not computed on yet, in its notes. */
-const CLOUD_NOTE = 'Point cloud: the whole-shape stages run on it; stage 1 from one source, the reconstruction error and decimation are for meshes only for now';
+const CLOUD_NOTE = 'Point cloud: every stage runs on it (CSCD-PC) but the reconstruction error, which is for meshes only for now';
 
 function showCloud(reply: CloudOpenedReply, reopen: () => Promise<boolean>): void {
   const t = reply.timings;
@@ -206,6 +206,9 @@ function showOpened(reply: OpenedReply | CloudOpenedReply, layer: ShapeLayer, sa
   params.showCloudOptions(cloud);
   // Flat shading and isolines draw a mesh's faces.
   for (const box of [flatBox, isolinesBox]) box.closest('label')!.hidden = cloud;
+  const random = byTestId('random-source');
+  random.textContent = cloud ? 'Random point' : 'Random vertex';
+  random.title = `Run stage 1 from a ${cloud ? 'point' : 'vertex'} drawn at random`;
   viewer.frame();
   markSample(gallery, sample);
   panel.setFile(reply.fileName, reply.format);
@@ -305,8 +308,8 @@ async function openSample(sample: Sample): Promise<boolean> {
 
 const canCompute = () => !!viewer.surface && !mesh?.surfaceError && !offer.pending;
 
-/** Stages with nothing to show on a point cloud yet: stage 1 from one source and the reconstruction error. */
-const meshOnly = (key: StageKey) => !!mesh?.cloud && (stageDef(key).group === 'source' || key === 'reconstruction');
+/** Stages with nothing to show on a point cloud yet: the reconstruction error. */
+const meshOnly = (key: StageKey) => !!mesh?.cloud && key === 'reconstruction';
 
 /** The stage shown: the one wanted, or the last one the stage-1 run reached when it stopped earlier. */
 function shownStage(): StageKey {
@@ -378,8 +381,9 @@ function refresh(): void {
   document.body.dataset.stage = key;
   byTestId('stage-index').textContent = String(stageIndex(key) + 1);
   byTestId('stage-title').textContent = def.title;
-  byTestId('stage-section').textContent = def.section;
-  let caption = def.caption;
+  const own = mesh?.cloud ? def.cloud : undefined; // a cloud's own account of the step, where it differs
+  byTestId('stage-section').textContent = own?.section ?? def.section;
+  let caption = own?.caption ?? def.caption;
   if (def.group === 'source' && single.reply) caption += separatorCaption(key, single.reply);
   if (def.group === 'shape' && whole.result) caption += SkeletonPanel.caption(key, whole.result);
   byTestId('stage-caption').textContent = caption;
@@ -394,7 +398,7 @@ function refresh(): void {
     section.hidden = section.dataset.group !== (def.group === 'mesh' ? 'source' : def.group);
   }
   byTestId('sk-recon-result').hidden = key !== 'reconstruction' || !whole.evaluation;
-  viewportHint.textContent = [def.click, '←/→ or 1–0: stages', 'drag to orbit', 'right-drag to pan', 'scroll to zoom'].filter(Boolean).join(' · ');
+  viewportHint.textContent = [own?.click ?? def.click, '←/→ or 1–0: stages', 'drag to orbit', 'right-drag to pan', 'scroll to zoom'].filter(Boolean).join(' · ');
 
   timeline.show(key, pillStates());
   updateTimes();
@@ -461,13 +465,13 @@ viewer.onClick = (x, y) => {
     return;
   }
   const pick = viewer.pick(x, y);
-  if (!pick || !canCompute() || mesh?.cloud) return;
+  if (!pick || !canCompute()) return;
   if (key === 'mesh') wanted = 'geodesics';
   void single.run(pick.vertex);
 };
 
 byTestId('random-source').addEventListener('click', () => {
-  if (!canCompute() || mesh?.cloud) return;
+  if (!canCompute()) return;
   if (stageDef(shownStage()).group !== 'source') wanted = 'geodesics';
   void single.runRandom();
 });

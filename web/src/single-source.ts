@@ -1,19 +1,19 @@
 /**
- * Stage 1 from one source vertex (the teaching half of the timeline): runs it in the worker for a
- * clicked or random vertex, re-runs the same source when a stage-1 option changes (per-mesh data is
+ * Stage 1 from one source vertex or point (the teaching half of the timeline): runs it in the worker
+ * for a clicked or random vertex of a mesh or point of a cloud, re-runs the same source when a stage-1 option changes (per-mesh data is
  * cached in the core, so that is quick), and builds the layers of every intermediate result.
  */
 import { SOURCE_STAGES, type StageKey } from './stage-defs.ts';
 import { changedOptions, type StudioContext } from './studio-context.ts';
 import { reachedStage, showSeparatorFigures } from './ui/separator-panel.ts';
 import { niceSpacing } from './viewer/colormap.ts';
-import { SpheresLayer, SurfaceLayer } from './viewer/layers.ts';
+import { PointsLayer, SpheresLayer } from './viewer/layers.ts';
 import { separatorLayers } from './viewer/separator-layers.ts';
 import { WorkerError } from './worker/client.ts';
 import type { SeparatorReply } from './worker/protocol.ts';
 
 /** Names of the layers a stage-1 run adds (besides the surface's colormap). */
-const SEPARATOR_LAYERS = ['source', 'cut-locus', 'boundary-extremities', 'target', 'path-1', 'path-2', 'approx-loop', 'sphere', 'loop'];
+const SEPARATOR_LAYERS = ['source', 'cut-locus', 'boundary-extremities', 'target', 'path-1', 'path-2', 'approx-loop', 'sphere', 'iterates', 'loop'];
 
 export class SingleSource {
   /** The run shown (null: none yet, or it failed). */
@@ -58,15 +58,15 @@ export class SingleSource {
   async run(source: number): Promise<void> {
     const { viewer, client } = this.ctx;
     const surface = viewer.surface;
-    // Stage 1 from one source is shown on meshes only (the page never asks it of a cloud).
-    if (!(surface instanceof SurfaceLayer) || source < 0 || source >= surface.vertexCount) return;
+    if (!surface || source < 0 || source >= surface.vertexCount) return;
     const generation = this.generation;
     const request = ++this.latest;
     const current = () => generation === this.generation && request === this.latest;
     if (this.source !== source) {
       const radius = surface.boundingSphere.radius * 0.022;
       this.ctx.layerColors.set('source', '#ffffff');
-      viewer.setLayer('source', new SpheresLayer('Source vertex', surface.vertexPosition(source).toArray(), radius));
+      const label = surface instanceof PointsLayer ? 'Source point' : 'Source vertex';
+      viewer.setLayer('source', new SpheresLayer(label, surface.vertexPosition(source).toArray(), radius));
     }
     this.ctx.begin('computing stage 1…');
     this.inFlight++;
@@ -88,7 +88,7 @@ export class SingleSource {
     }
   }
 
-  /** A vertex drawn at random (uniformly), for "Random". */
+  /** A vertex (or point) drawn at random (uniformly), for "Random". */
   runRandom(): Promise<void> {
     const count = this.ctx.viewer.surface?.vertexCount ?? 0;
     return count > 0 ? this.run(Math.floor(Math.random() * count)) : Promise.resolve();
@@ -112,7 +112,7 @@ export class SingleSource {
 
   private show(reply: SeparatorReply): void {
     const { viewer, layerColors } = this.ctx;
-    const surface = viewer.surface as SurfaceLayer;
+    const surface = viewer.surface!;
     const s = reply.separator;
     const spacing = niceSpacing(reply.distanceMax);
     surface.setScalarField({ values: s.distance, max: reply.distanceMax, isolineSpacing: spacing });

@@ -14,6 +14,8 @@ export const COLORS = {
   approxLoop: '#ff8c00',
   sphere: '#8fc3ff',
   loop: '#00e1ff',
+  /** A cloud's loop at the recorded steps of its shortening. */
+  iterates: '#2f8fa3',
   /** Candidate loops while they arrive. */
   candidate: '#ffd21a',
   packed: '#00e1ff',
@@ -56,9 +58,12 @@ export interface StageDef {
   legend: Array<{ layer: string; label: string; color: string }>;
   /** What a click on the surface does here (the viewport hint); null: nothing. */
   click: string | null;
+  /** On a point cloud (CSCD-PC), where its steps differ from the mesh's: their own paper reference and caption. */
+  cloud?: { section: string; caption: string; click?: string };
 }
 
 const PICK = 'click the surface to run stage 1 from that vertex';
+const PICK_POINT = 'click a point to run stage 1 from it';
 const SOURCE = ['source'];
 const PATHS = ['target', 'path-1', 'path-2'];
 
@@ -73,6 +78,12 @@ export const STAGES: readonly StageDef[] = [
     layers: [],
     legend: [],
     click: PICK,
+    cloud: {
+      section: 'Sec. 4',
+      caption:
+        'The input: a point cloud, read as samples of a surface. CSCD-PC builds each point a local triangulation of its nearest neighbours; glued together as a tufted cover they carry the heat method, and their edges that stay in the tangent planes make the graph the cut locus and the paths run on. The panel lists its facts.',
+      click: PICK_POINT,
+    },
   },
   {
     key: 'geodesics',
@@ -84,6 +95,12 @@ export const STAGES: readonly StageDef[] = [
     layers: SOURCE,
     legend: [{ layer: 'source', label: 'source', color: COLORS.source }],
     click: PICK,
+    cloud: {
+      section: 'Sec. 4.1.1',
+      caption:
+        'Geodesic distance from the source point by the heat method on the tufted Laplacian of the cloud (Sharp & Crane), blue near and red far. Every later step of stage 1 is read off this field.',
+      click: PICK_POINT,
+    },
   },
   {
     key: 'cut-locus',
@@ -98,6 +115,12 @@ export const STAGES: readonly StageDef[] = [
       { layer: 'boundary-extremities', label: 'boundary extremities', color: COLORS.cutLocus },
     ],
     click: PICK,
+    cloud: {
+      section: 'Sec. 4.1.2 and App.',
+      caption:
+        'Where shortest paths from the source collide, found by the paper\'s method for clouds (appendix "Our adaptation on point clouds") on the cloud\'s neighbourhood graph: points where the distance gradient (the point-cloud gradient operator) turns sharply across a neighbour and where the distance is ridge-like (its Laplacian), joined into a tree grown from the farthest point, whose short branches are pruned. A plain angle threshold would leave it in dozens of pieces: the tree bridges them.',
+      click: PICK_POINT,
+    },
   },
   {
     key: 'paths',
@@ -114,6 +137,12 @@ export const STAGES: readonly StageDef[] = [
       { layer: 'path-2', label: 'path 2', color: COLORS.path2 },
     ],
     click: PICK,
+    cloud: {
+      section: 'Sec. 4.1.3–4.1.4',
+      caption:
+        'The target is the cut-locus point nearest to the source whose two incoming gradients are opposite (the two sides of a feature meet there). From it, two paths descend the distance along the neighbourhood graph on the two sides until they meet: together they go once around the part the target sits on.',
+      click: PICK_POINT,
+    },
   },
   {
     key: 'loop',
@@ -122,14 +151,21 @@ export const STAGES: readonly StageDef[] = [
     section: 'Sec. 4.1.4–4.1.6, 4.2.1',
     caption:
       'The two paths joined give the approximate loop (orange): closed, but it zig-zags along edges. Edge flips shorten it inside the constraint sphere (translucent; the tinted patch is the surface inside it), which keeps the separator local. The result (cyan) cuts the surface in two locally; its score is A1 / (A2 · length), A1 ≤ A2 the areas on its two sides.',
-    layers: [...SOURCE, 'cut-locus', 'boundary-extremities', ...PATHS, 'approx-loop', 'sphere', 'loop'],
+    layers: [...SOURCE, 'cut-locus', 'boundary-extremities', ...PATHS, 'approx-loop', 'sphere', 'iterates', 'loop'],
     dimmed: ['cut-locus', 'boundary-extremities', ...PATHS],
     legend: [
       { layer: 'approx-loop', label: 'approximate loop', color: COLORS.approxLoop },
       { layer: 'sphere', label: 'constraint sphere', color: COLORS.sphere },
+      { layer: 'iterates', label: 'shortening steps', color: COLORS.iterates },
       { layer: 'loop', label: 'shortened loop', color: COLORS.loop },
     ],
     click: PICK,
+    cloud: {
+      section: 'Sec. 4.1.4–4.1.6 and App.',
+      caption:
+        'The two paths joined give the approximate loop (orange). A cloud has no edges to flip (appendix "Curve Shortening using optimization based framework"): the loop is resampled to about one point spacing and moved by gradient descent of Σ H(|x_i − x_{i+1}|), H(s) = e^{s²} − 1, the gradient projected on the tangent planes, every step projected back onto the cloud\'s moving-least-squares surface, and a penalty (λ = 10) keeping it inside the constraint sphere. The thin lines are its recorded steps, the result is cyan; its score is A1 / (A2 · length), A1 ≤ A2 the areas on its two sides.',
+      click: PICK_POINT,
+    },
   },
   {
     key: 'separators',

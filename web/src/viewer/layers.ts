@@ -3,7 +3,7 @@
  * them by name (surface, source marker, and later cut locus polylines, skeleton points, spheres).
  */
 import * as THREE from 'three';
-import { colormapTexture } from './colormap.ts';
+import { colormapTexture, turbo } from './colormap.ts';
 
 export interface Layer {
   /** Shown in the layer list. */
@@ -269,15 +269,23 @@ const POINT_SIZE_PX = 3;
 
 /**
  * A point cloud: one THREE.Points draw call over the worker's float32 positions (a million points
- * stay interactive), sprites of a fixed screen size. Region colours go into a per-point colour
- * attribute; the mesh-only looks (scalar fields, isolines, flat shading, the sphere tint) have no
- * counterpart on points and are no-ops, so whole-shape stages drive both layers alike.
+ * stay interactive), sprites of a fixed screen size. Region colours and a scalar field (the distance
+ * of stage 1, in the surface's colormap, muted like the surface when lines are drawn on it) go into a
+ * per-point colour attribute, rewritten only when what it shows changes; the mesh-only looks
+ * (isolines, flat shading, the sphere tint) have no counterpart on points and are no-ops, so the
+ * stages drive both layers alike.
  */
 export class PointsLayer extends PositionsLayer implements Layer {
   readonly label = 'Points';
   readonly object: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly base = new THREE.Color(BASE_COLOR).convertSRGBToLinear();
   private regionColors: Float32Array | null = null;
+  private regionMix = 0;
+  private field: ScalarField | null = null;
+  private scalarShown = false;
+  private dimmed = false;
+  /** What the colour attribute holds now (null: not written yet). */
+  private shown: { field: ScalarField | null; regionColors: Float32Array | null; regionMix: number; dimmed: boolean } | null = null;
 
   constructor(positions: Float32Array, pixelRatio: number) {
     super();
@@ -296,14 +304,53 @@ export class PointsLayer extends PositionsLayer implements Layer {
   }
 
   setRegionColorMix(mix: number): void {
+    this.regionMix = mix;
+    this.recolor();
+  }
+
+  setScalarField(field: ScalarField | null): void {
+    this.field = field;
+    this.recolor();
+  }
+
+  setScalarVisible(visible: boolean): void {
+    this.scalarShown = visible;
+    this.recolor();
+  }
+
+  setDimmed(dimmed: boolean): void {
+    this.dimmed = dimmed;
+    this.recolor();
+  }
+
+  /** The scalar field when it is shown, else the region colours mixed in by regionMix. */
+  private recolor(): void {
+    const field = this.scalarShown ? this.field : null;
+    const regionColors = field ? null : this.regionColors;
+    const regionMix = field || !regionColors ? 0 : this.regionMix;
+    const dimmed = !!field && this.dimmed;
+    const want = { field, regionColors, regionMix, dimmed };
+    const had = this.shown;
+    if (had && had.field === field && had.regionColors === regionColors && had.regionMix === regionMix && had.dimmed === dimmed) return;
+    this.shown = want;
     const attribute = this.geometry.getAttribute('color') as THREE.BufferAttribute;
     const out = attribute.array as Float32Array;
-    const colors = this.regionColors;
     const { r, g, b } = this.base;
-    for (let i = 0; i < out.length; i += 3) {
-      out[i] = r + (colors && mix > 0 ? (colors[i] - r) * mix : 0);
-      out[i + 1] = g + (colors && mix > 0 ? (colors[i + 1] - g) * mix : 0);
-      out[i + 2] = b + (colors && mix > 0 ? (colors[i + 2] - b) * mix : 0);
+    if (field) {
+      const color = new THREE.Color();
+      for (let i = 0; i < out.length / 3; i++) {
+        const value = field.values[i];
+        if (Number.isFinite(value)) color.setRGB(...turbo(value / field.max), THREE.SRGBColorSpace);
+        else color.copy(this.base);
+        if (dimmed) color.lerp(DIM_GREY, 0.5 * DIM_MIX);
+        color.toArray(out, 3 * i);
+      }
+    } else {
+      for (let i = 0; i < out.length; i += 3) {
+        out[i] = r + (regionColors ? (regionColors[i] - r) * regionMix : 0);
+        out[i + 1] = g + (regionColors ? (regionColors[i + 1] - g) * regionMix : 0);
+        out[i + 2] = b + (regionColors ? (regionColors[i + 2] - b) * regionMix : 0);
+      }
     }
     attribute.needsUpdate = true;
   }
@@ -318,10 +365,7 @@ export class PointsLayer extends PositionsLayer implements Layer {
     material.needsUpdate = true;
   }
 
-  setDimmed(): void {}
   setRegion(): void {}
-  setScalarVisible(): void {}
-  setScalarField(): void {}
   setIsolines(): void {}
   setFlatShading(): void {}
 

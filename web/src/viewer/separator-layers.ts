@@ -1,11 +1,14 @@
 /**
  * The viewer layers of one stage-1 run: cut locus and boundary extremities, target (or the two
- * boundary ends of an open separator), paths, loops, constraint sphere.
+ * boundary ends of an open separator), paths, loops, constraint sphere, and on a point cloud the
+ * loop's shortening as it went. On a mesh, lines are lifted off the surface along its normals so
+ * that they show; a cloud's points are sprites that hide nothing, so its lines stay where they are.
  */
 import * as THREE from 'three';
 import type { SeparatorData } from '../worker/protocol.ts';
 import { COLORS } from '../stage-defs.ts';
-import { SpheresLayer, type Layer, type SurfaceLayer } from './layers.ts';
+import { LinesLayer, concat } from './skeleton-layers.ts';
+import { SpheresLayer, SurfaceLayer, type Layer, type ShapeLayer } from './layers.ts';
 import { GlassSphereLayer, TubesLayer, graphSegments, liftOffSurface, polylineSegments } from './tubes.ts';
 
 export interface NamedLayer {
@@ -18,7 +21,7 @@ export interface NamedLayer {
 const RADIUS = { cutLocus: 0.0042, extremity: 0.014, path: 0.0058, approxLoop: 0.0072, loop: 0.0105, target: 0.03 };
 
 /** Every layer the run has data for (a failed run has fewer). */
-export function separatorLayers(s: SeparatorData, surface: SurfaceLayer): NamedLayer[] {
+export function separatorLayers(s: SeparatorData, surface: ShapeLayer): NamedLayer[] {
   const R = surface.boundingSphere.radius;
   const out: NamedLayer[] = [];
 
@@ -29,7 +32,7 @@ export function separatorLayers(s: SeparatorData, surface: SurfaceLayer): NamedL
     const lifted = Float32Array.from(c.points);
     const p = new THREE.Vector3();
     const n = new THREE.Vector3();
-    for (let i = 0; i < c.vertices.length; i++) {
+    for (let i = 0; i < c.vertices.length && surface instanceof SurfaceLayer; i++) {
       const v = c.vertices[i];
       if (v >= surface.vertexCount) continue;
       p.fromArray(lifted, 3 * i).addScaledVector(surface.vertexNormal(v, n), 0.6 * r).toArray(lifted, 3 * i);
@@ -47,7 +50,7 @@ export function separatorLayers(s: SeparatorData, surface: SurfaceLayer): NamedL
     const r = radius * R;
     const centres = Float32Array.from(points);
     const p = new THREE.Vector3();
-    for (let i = 0; i < centres.length / 3; i++) {
+    for (let i = 0; i < centres.length / 3 && surface instanceof SurfaceLayer; i++) {
       p.fromArray(centres, 3 * i);
       const v = surface.nearestVertex(p);
       if (v >= 0) p.addScaledVector(surface.vertexNormal(v), 0.35 * r);
@@ -78,6 +81,14 @@ export function separatorLayers(s: SeparatorData, surface: SurfaceLayer): NamedL
     });
   }
 
+  // A cloud's loop as its descent moved it (App. "Curve Shortening using optimization based framework"):
+  // thin lines, every recorded step but the last, which is the loop itself.
+  const steps = s.iterates?.slice(0, -1) ?? [];
+  if (steps.length > 0) {
+    const label = `Shortening (${steps.length} of its steps)`;
+    out.push({ name: 'iterates', layer: new LinesLayer(label, concat(steps.map((loop) => polylineSegments(loop, true))), COLORS.iterates), color: COLORS.iterates });
+  }
   tube('loop', s.closed ? 'Loop' : 'Path', s.loop, s.closed, RADIUS.loop, COLORS.loop);
   return out;
 }
+

@@ -78,7 +78,8 @@ export class LinesLayer implements Layer {
   }
 }
 
-function concat(parts: Float32Array[]): Float32Array {
+/** Arrays one after the other in one array. */
+export function concat(parts: Float32Array[]): Float32Array {
   const out = new Float32Array(parts.reduce((n, p) => n + p.length, 0));
   let at = 0;
   for (const p of parts) {

@@ -208,6 +208,8 @@ export interface SeparatorData extends Omit<Separator, 'distance' | 'cutLocus' |
   paths: [Float32Array, Float32Array];
   approxLoop: Float32Array;
   loop: Float32Array;
+  /** On a point cloud: the loop as its shortening's descent moved it, every k-th step (the last is the loop); absent on a mesh, whose loop FlipOut shortens by edge flips. */
+  iterates?: Float32Array[];
 }
 
 export interface SeparatorReply {

@@ -105,6 +105,8 @@ interface OpenCloud {
   /** The cloud as opened (after the checks and any subsample), for the separator workers to open too. */
   arrays: CloudArrays;
   neighbours: number;
+  /** The source of the last separator request, for re-runs with other options. */
+  lastSource: number | null;
   /** The last skeleton computed, with its options, for `write`. */
   lastSkeleton: { skeleton: Skeleton; options: CloudOptions } | null;
 }
@@ -218,7 +220,7 @@ async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: num
   progress(id, 'inspect', 'finding the neighbours of every point…');
   const t = performance.now();
   closeShapes();
-  currentCloud = { cloud: core.openCloud(cloud, { neighbours }), arrays: cloud, neighbours, lastSkeleton: null };
+  currentCloud = { cloud: core.openCloud(cloud, { neighbours }), arrays: cloud, neighbours, lastSource: null, lastSkeleton: null };
   const inspectMs = performance.now() - t;
   const positions = request.withArrays ? new Float32Array(cloud.positions) : new Float32Array(0);
   post(
@@ -347,8 +349,79 @@ function toWire(s: Separator): SeparatorData {
   };
 }
 
+/** Iterates of a cloud's loop shortening sent to the page, at most (every k-th step is kept). */
+const SHORTENING_FRAMES = 60;
+
+/** Length of a closed polyline (xyz triples). */
+function closedLength(p: ArrayLike<number>): number {
+  const n = p.length / 3;
+  let length = 0;
+  for (let i = 0; i < n; i++) {
+    const j = (i + 1) % n;
+    length += Math.hypot(p[3 * j] - p[3 * i], p[3 * j + 1] - p[3 * i + 1], p[3 * j + 2] - p[3 * i + 2]);
+  }
+  return length;
+}
+
+/**
+ * Stage 1 from one point of the open cloud, as a mesh's run travels to the page (a cloud's separator is
+ * always a loop: no boundary ends), with the shortening's iterates: the same descent run again from the
+ * approximate loop, every k-th step kept (deterministic, so it ends on the stages' loop).
+ */
+function cloudSeparatorData(cloud: OpenCloud, source: number, options: CloudOptions): SeparatorData {
+  const s = cloud.cloud.separatorStages(source, options);
+  const shortened = s.approxLoop.length >= 9 && s.iterations > 0
+    ? cloud.cloud.shortenLoop(s.approxLoop, { sphere: s.sphere, recordEvery: Math.max(1, Math.ceil(s.iterations / SHORTENING_FRAMES)) })
+    : null;
+  const c = s.cutLocus;
+  return {
+    source,
+    status: s.status,
+    message: s.message,
+    distance: f32(s.distance),
+    cutLocus: { vertices: c.vertices, edges: c.edges, root: c.root, cycleRank: c.cycleRank, points: f32(c.points), angleDeviation: f32(c.angleDeviation), laplacian: f32(c.laplacian) },
+    boundaryExtremities: { vertices: new Uint32Array(0), points: new Float64Array(0) },
+    target: s.target,
+    attempts: s.attempts,
+    targetPoint: s.targetPoint,
+    ends: null,
+    endPoints: null,
+    closed: true,
+    paths: [f32(s.paths[0]), f32(s.paths[1])],
+    approxLoop: f32(s.approxLoop),
+    loop: f32(s.loop),
+    sphere: s.sphere,
+    approxLength: closedLength(s.approxLoop),
+    length: s.length,
+    areas: s.areas,
+    score: s.score,
+    centroidInside: s.centroidInside,
+    timings: { ...s.timings },
+    iterates: shortened ? shortened.iterates.map(f32) : [],
+  };
+}
+
 async function separator(request: SeparatorRequest): Promise<void> {
   const { id } = request;
+  const cloud = currentCloud;
+  if (cloud) {
+    const source = request.source ?? cloud.lastSource;
+    if (source == null) throw new UserError('core', 'No source point has been picked yet.');
+    if (!Number.isInteger(source) || source < 0 || source >= cloud.cloud.facts.points) {
+      throw new UserError('core', `Source point ${source} is not a point of this cloud.`);
+    }
+    const options: Options = { ...defaultOptions, ...request.options };
+    progress(id, 'separator', 'computing the separator…');
+    const t = performance.now();
+    const data = cloudSeparatorData(cloud, source, cloudOptionsOf(options, cloud.neighbours));
+    cloud.lastSource = source;
+    const c = data.cutLocus;
+    post(
+      { type: 'separator', id, separator: data, options, distanceMax: finiteMax(data.distance), timings: { separatorMs: performance.now() - t } },
+      transferables(data.distance, c.vertices, c.edges, c.points, c.angleDeviation, c.laplacian, ...data.paths, data.approxLoop, data.loop, ...data.iterates!),
+    );
+    return;
+  }
   const source = request.source ?? current?.lastSource;
   if (source == null) throw new UserError('core', 'No source vertex has been picked yet.');
   const { mesh, surface } = await surfaceFor(id, source);

@@ -1,9 +1,13 @@
 /**
  * Point clouds in the page: a cloud dropped on the window opens as points (its facts, the neighbours
- * option, the mesh-only stage disabled), shows stage 1 from a clicked point stage by stage, and runs to a skeleton, stage 1 on the pool of separator workers
- * as a mesh's; a cloud the checks refuse shows the message the CLI gives, and the open shape stays.
+ * option), shows stage 1 from a clicked point stage by stage, and runs to a skeleton (stage 1 on the
+ * pool of separator workers as a mesh's) and its reconstruction error; a cloud the checks refuse shows
+ * the message the CLI gives, and the open shape stays.
  */
-import { readFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
 import { expect, test, type Page } from '@playwright/test';
 import { fixture } from '../paths.ts';
 import { canvasStats } from './pixels.ts';
@@ -36,7 +40,6 @@ test('a dropped point cloud runs to a skeleton with its cycle, on two workers', 
   await expect(page.getByTestId('facts-faces')).toHaveText('–');
   await expect(page.getByTestId('warnings')).toContainText('Point cloud:');
   await expect(page.getByTestId('opt-neighbours')).toBeVisible();
-  await expect(page.getByTestId('stage-reconstruction'), 'the reconstruction error is for meshes').toBeDisabled();
 
   await enterStage(page, 'separators');
   await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
@@ -62,6 +65,25 @@ test('a dropped point cloud runs to a skeleton with its cycle, on two workers', 
   await enterStage(page, 'skeleton');
   await expect(layerBox(page, 'sk-nodes')).toBeChecked();
   await expect(page.getByTestId('error')).toBeHidden();
+
+  // The reconstruction error against the cloud's points: the points in the error's colours, the number `cscd evaluate` prints.
+  const skeletonView = await canvasStats(page);
+  await enterStage(page, 'reconstruction');
+  await expect(body(page)).toHaveAttribute('data-sk-recon', /\d/, { timeout: 60_000 });
+  await expect(layerBox(page, 'sk-recon')).toBeChecked();
+  await expect(page.getByTestId('stage-caption')).toContainText('against the cloud’s points');
+  const shown = Number(await body(page).getAttribute('data-sk-recon'));
+  const dir = mkdtempSync(path.join(tmpdir(), 'cscd-e2e-'));
+  try {
+    const run = (...args: string[]) => execFileSync(process.execPath, ['cli/cscd.mjs', ...args], { encoding: 'utf8' });
+    const cloud = fixture('clouds', 'bob_subsample.ply');
+    run('skeleton', cloud, '--n', '40', '--out', path.join(dir, 's.json'));
+    const printed = JSON.parse(run('evaluate', cloud, path.join(dir, 's.json'))) as { reconError: number };
+    expect(Math.abs(shown - printed.reconError) / printed.reconError).toBeLessThan(1e-9);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+  expect((await canvasStats(page)).hueBins, 'the points in the error colormap').toBeGreaterThan(skeletonView.hueBins);
 });
 
 test('a click on a point shows stage 1 on the cloud: the distance, cut locus, paths, the shortening steps and the loop', async ({ page }) => {

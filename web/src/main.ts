@@ -188,7 +188,7 @@ function showMesh(reply: OpenedReply, sample: string | null): void {
 }
 
 /** What a cloud is not computed on yet, in its notes. */
-const CLOUD_NOTE = 'Point cloud: every stage runs on it (CSCD-PC) but the reconstruction error, which is for meshes only for now';
+const CLOUD_NOTE = 'Point cloud: every stage runs on it (CSCD-PC); the reconstruction error is measured against its points';
 
 function showCloud(reply: CloudOpenedReply, reopen: () => Promise<boolean>): void {
   const t = reply.timings;
@@ -308,8 +308,6 @@ async function openSample(sample: Sample): Promise<boolean> {
 
 const canCompute = () => !!viewer.surface && !mesh?.surfaceError && !offer.pending;
 
-/** Stages with nothing to show on a point cloud yet: the reconstruction error. */
-const meshOnly = (key: StageKey) => !!mesh?.cloud && key === 'reconstruction';
 
 /** The stage shown: the one wanted, or the last one the stage-1 run reached when it stopped earlier. */
 function shownStage(): StageKey {
@@ -323,7 +321,7 @@ function pillStates(): Map<StageKey, PillState> {
     let state: PillState;
     if (!viewer.surface) state = 'disabled';
     else if (group === 'mesh') state = 'ready';
-    else if (!canCompute() || meshOnly(key)) state = 'disabled';
+    else if (!canCompute()) state = 'disabled';
     else if (group === 'source') state = single.has(key) ? 'ready' : single.reply ? 'disabled' : single.busy ? 'running' : 'pending';
     else if (key === 'reconstruction') state = whole.evaluation ? 'ready' : whole.result ? 'pending' : whole.running ? 'disabled' : 'pending';
     else state = whole.result ? 'ready' : whole.running ? (key === 'separators' ? 'running' : 'pending') : 'pending';

@@ -229,6 +229,11 @@ export const STAGES: readonly StageDef[] = [
     layers: ['sk-recon'],
     legend: [{ layer: 'sk-recon', label: 'reconstructed surface', color: COLORS.reconstruction }],
     click: null,
+    cloud: {
+      section: 'Sec. 5',
+      caption:
+        'The shape rebuilt from the skeleton alone (a convolution surface of its nodes and radii, see-through) and each point coloured by its squared distance to it: the paper’s reconstruction error, measured against the cloud’s points, the cloud scaled to unit bounding-box diagonal (`cscd evaluate` gives the same number).',
+    },
   },
 ];
 

@@ -690,15 +690,16 @@ async function finishRun(id: number, pipeline: Pipeline, options: Options, repor
 
 async function evaluate(request: EvaluateRequest): Promise<void> {
   const { id } = request;
-  if (currentCloud) throw noMesh('The reconstruction error');
-  if (!current?.lastSkeleton) throw new UserError('core', 'There is no skeleton to evaluate: compute one first.');
+  const last = currentCloud ? currentCloud.lastSkeleton : current?.lastSkeleton;
+  if (!last) throw new UserError('core', 'There is no skeleton to evaluate: compute one first.');
   const core = await loadCore(id);
   progress(id, 'evaluate', 'reconstructing the surface from the skeleton…');
   // One call into the core: a cancel stops it only before it starts (else the page replaces the worker).
   await yieldToEvents();
   checkCancelled(id);
   const t = performance.now();
-  const result = core.evaluate(current.mesh, current.lastSkeleton.skeleton);
+  // A cloud's skeleton against its points (as `cscd evaluate` scores it), a mesh's against its vertices.
+  const result = currentCloud ? core.evaluateCloud(currentCloud.arrays, last.skeleton) : core.evaluate(current!.mesh, last.skeleton);
   const evaluateMs = performance.now() - t;
   const evaluation = { ...result, radii: f32(result.radii), vertexError: f32(result.vertexError) };
   post(

@@ -7,7 +7,8 @@
 // Every method runs in its own process pinned to one core (bench/process.ts), with its default options.
 // Each skeleton is scored by the paper's reconstruction error against the source mesh (`core.evaluate`,
 // radii derived from the mesh by one rule for all) and against the cloud's points (`core.evaluateCloud`,
-// radii derived around the points); cycles against the source mesh's genus; leaves. The table goes to
+// radii derived around the points); cycles against the source mesh's genus; leaves; for the trees, the mean
+// distance from the reference skeleton points shipped beside them to the skeleton. The table goes to
 // bench/results/<date>-clouds[-N].md (rewritten after every cloud), skeletons and logs to
 // .deps/bench/runs/<same name>/.
 import { spawnSync } from 'node:child_process';
@@ -21,7 +22,7 @@ import type { CloudArrays } from '../lib/core/types.ts';
 import { checkCloud } from '../lib/io/cloud-check.ts';
 import { parseMesh, parseShape } from '../lib/io/index.ts';
 import { parseSkeleton } from '../lib/io/skeleton.ts';
-import { geometricMean, leafIndices, median } from './metrics.ts';
+import { geometricMean, leafIndices, meanDistanceToSkeleton, median } from './metrics.ts';
 import { repoRoot, runPinned, shell, venvPython, type Run } from './process.ts';
 import { claimResultName } from './result-name.ts';
 
@@ -30,6 +31,12 @@ const cloudFolder = path.join(sharedData, 'pointclouds');
 const resultsDir = path.join(repoRoot, 'bench', 'results');
 const METHODS = ['cscd-pc', 'msls-graph', 'cscd-m'] as const;
 type Method = (typeof METHODS)[number];
+
+/** The reference skeleton points shipped beside a cloud (WoodSKE's trees), or null. */
+function referencePoints(cloudFile: string): string | null {
+  const file = path.join(sharedData, 'reference_skeletons', `${path.basename(cloudFile, '.ply')}_skeleton_points.ply`);
+  return existsSync(file) ? file : null;
+}
 
 /** The shared mesh a cloud was sampled from (../shared/data/pointclouds/MANIFEST.md), or null (trees, external clouds). */
 function sourceMesh(cloudFile: string): string | null {
@@ -50,12 +57,14 @@ interface Row {
   leaves: number | null;
   againstMesh: number | null;
   againstCloud: number | null;
+  /** Mean distance from the reference skeleton points to the skeleton, % of the cloud's bounding-box diagonal. */
+  toReference: number | null;
   note: string;
 }
 
 const num = (x: number | null, digits = 3) => (x === null ? '–' : Number(x.toPrecision(digits)).toString());
 
-function score(core: Core, row: Row, mesh: MeshArrays | null, cloud: CloudArrays): void {
+function score(core: Core, row: Row, mesh: MeshArrays | null, cloud: CloudArrays, reference: Float64Array | null): void {
   if (row.run.status !== 'ok') return;
   try {
     const skeleton = parseSkeleton(readFileSync(row.run.file), row.run.file);
@@ -66,9 +75,19 @@ function score(core: Core, row: Row, mesh: MeshArrays | null, cloud: CloudArrays
     row.cycles = atCloud.cycles;
     row.leaves = leafIndices(skeleton.nodes.length / 3, skeleton.edges).length;
     if (mesh) row.againstMesh = core.evaluate(mesh, input).reconError;
+    if (reference) row.toReference = meanDistanceToSkeleton(reference, skeleton, boxDiagonal(cloud.positions));
   } catch (error) {
     row.note = `not scored: ${error instanceof Error ? error.message : String(error)}`;
   }
+}
+
+function boxDiagonal(positions: ArrayLike<number>): number {
+  const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < positions.length; i++) {
+    low[i % 3] = Math.min(low[i % 3], positions[i]);
+    high[i % 3] = Math.max(high[i % 3], positions[i]);
+  }
+  return Math.hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
 }
 
 function markdown(rows: Row[], machine: string, argv: string[]): string {
@@ -81,17 +100,18 @@ function markdown(rows: Row[], machine: string, argv: string[]): string {
       + '(CSCD-PC and CSCD-M: `n = auto`; MSLS: pygel3d\'s `MSLS_skeleton_and_map` on the edges of the cloud\'s neighbourhood graph, '
       + 'the local-triangulation edges CSCD-PC runs on). Seconds: each runner\'s own wall time of the skeletonisation (reading, checking and '
       + 'writing excluded; MSLS: building its graph excluded). Error ×1e3, the paper\'s reconstruction error with radii derived by one rule '
-      + 'for every method: against the source mesh (its vertices) and against the cloud (its points).',
+      + 'for every method: against the source mesh (its vertices) and against the cloud (its points). Reference: for the trees, the mean '
+      + 'distance from the reference skeleton points shipped beside them (WoodSKE) to the skeleton, % of the cloud\'s bounding-box diagonal.',
     '',
-    '| cloud | points | source mesh (genus) | method | seconds | nodes | cycles | leaves | error vs mesh ×1e3 | error vs cloud ×1e3 | note |',
-    '| --- | ---: | --- | --- | ---: | ---: | :---: | ---: | ---: | ---: | --- |',
+    '| cloud | points | source mesh (genus) | method | seconds | nodes | cycles | leaves | error vs mesh ×1e3 | error vs cloud ×1e3 | reference, % diag | note |',
+    '| --- | ---: | --- | --- | ---: | ---: | :---: | ---: | ---: | ---: | ---: | --- |',
   ];
   for (const r of rows) {
     const seconds = r.run.status === 'ok' ? r.run.seconds!.toFixed(2) : r.run.status;
     const meshCell = r.mesh ? `${path.basename(r.mesh)} (${r.genus})` : '–';
     const cycles = r.cycles === null ? '–' : r.genus === null ? String(r.cycles) : `${r.cycles} / ${r.genus}`;
     lines.push(`| ${r.cloud} | ${r.points} | ${meshCell} | ${r.method} | ${seconds} | ${r.nodes ?? '–'} | ${cycles} | ${r.leaves ?? '–'} | `
-      + `${num(r.againstMesh)} | ${num(r.againstCloud)} | ${r.run.reason || r.note} |`);
+      + `${num(r.againstMesh)} | ${num(r.againstCloud)} | ${num(r.toReference)} | ${r.run.reason || r.note} |`);
   }
   const of = (method: Method) => rows.filter((r) => r.method === method);
   const ratios = (a: Method, b: Method, key: 'againstMesh' | 'seconds') => of(a).flatMap((r) => {
@@ -151,6 +171,9 @@ async function main(): Promise<void> {
     const meshPath = sourceMesh(file);
     const mesh = meshPath ? parseMesh(readFileSync(meshPath), meshPath) : null;
     const genus = mesh ? core.inspect(mesh).genus : null;
+    const referenceFile = referencePoints(file);
+    const referenceShape = referenceFile ? parseShape(readFileSync(referenceFile), referenceFile) : null;
+    const reference = referenceShape?.kind === 'cloud' ? referenceShape.positions : null;
     process.stdout.write(`[${i + 1}/${clouds.length}] ${label} (${cloud.positions.length / 3} points; ${meshPath ? `${path.basename(meshPath)}, genus ${genus}` : 'no source mesh'})\n`);
 
     const graph = path.join(runDir, `${label}.graph.json`);
@@ -171,10 +194,10 @@ async function main(): Promise<void> {
       runs.push(['cscd-m', meshRuns.get(meshPath)!]);
     }
     for (const [method, run] of runs) {
-      const row: Row = { cloud: label, points: cloud.positions.length / 3, mesh: meshPath, genus, method, run, nodes: null, cycles: null, leaves: null, againstMesh: null, againstCloud: null, note: '' };
-      score(core, row, mesh, cloud);
+      const row: Row = { cloud: label, points: cloud.positions.length / 3, mesh: meshPath, genus, method, run, nodes: null, cycles: null, leaves: null, againstMesh: null, againstCloud: null, toReference: null, note: '' };
+      score(core, row, mesh, cloud, reference);
       rows.push(row);
-      process.stdout.write(`  ${method.padEnd(10)} ${run.status === 'ok' ? `${run.seconds!.toFixed(1)} s, ${row.cycles} cycles, error vs mesh ${num(row.againstMesh)}, vs cloud ${num(row.againstCloud)}` : `${run.status} ${run.reason}`}\n`);
+      process.stdout.write(`  ${method.padEnd(10)} ${run.status === 'ok' ? `${run.seconds!.toFixed(1)} s, ${row.cycles} cycles, error vs mesh ${num(row.againstMesh)}, vs cloud ${num(row.againstCloud)}${reference ? `, reference ${num(row.toReference)}% of the diagonal` : ''}` : `${run.status} ${run.reason}`}\n`);
     }
     writeFileSync(path.join(resultsDir, `${name}.md`), markdown(rows, machine, process.argv.slice(2)));
   }

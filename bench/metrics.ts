@@ -72,6 +72,17 @@ export function distanceToSkeleton(p: ArrayLike<number>, skeleton: Graph): numbe
   return best;
 }
 
+/**
+ * How far a reference skeleton given as points (WoodSKE's trees: dense points along the branches, no
+ * edges) lies from a skeleton: the mean of each point's distance to it, in % of `diagonal`.
+ */
+export function meanDistanceToSkeleton(points: ArrayLike<number>, skeleton: Graph, diagonal: number): number {
+  let sum = 0;
+  const count = Math.floor(points.length / 3);
+  for (let i = 0; i < count; i++) sum += distanceToSkeleton([points[3 * i], points[3 * i + 1], points[3 * i + 2]], skeleton);
+  return (100 * sum) / count / diagonal;
+}
+
 export interface TipGap {
   /** Per tip: distance to the skeleton over the mesh's bounding-box diagonal. */
   gaps: number[];

@@ -1,7 +1,8 @@
 // The bench's pure figures (bench/metrics.ts) on inputs small enough to work out by hand.
 import { describe, expect, it } from 'vitest';
 import {
-  compareErrors, distanceToSkeleton, geometricMean, leafIndices, mapByPosition, ownLeaves, tipGap, VertexMapError, vertexMapRadii,
+  compareErrors, distanceToSkeleton, geometricMean, leafIndices, mapByPosition, meanDistanceToSkeleton, ownLeaves, tipGap, VertexMapError,
+  vertexMapRadii,
 } from '../../bench/metrics.ts';
 
 // A 3-segment polyline along x from 0 to 3, then a lone node at (10, 0, 0): nodes 0-1-2-3 and 4.
@@ -20,6 +21,10 @@ describe('distance to a skeleton', () => {
   });
   it('is infinite for an empty skeleton', () => {
     expect(distanceToSkeleton([0, 0, 0], { nodes: [], edges: [] })).toBe(Infinity);
+  });
+  it('of reference points, is their mean distance in % of the diagonal', () => {
+    // 2 above the segments, 1 beside the lone node, 0 on the polyline: mean 1, a diagonal of 20 -> 5%.
+    expect(meanDistanceToSkeleton([1.5, 2, 0, 10, 0, 1, 2.5, 0, 0], polyline, 20)).toBeCloseTo(5, 12);
   });
 });
 

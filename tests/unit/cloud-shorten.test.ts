@@ -269,3 +269,28 @@ describe('a loop around a finger of the hand cloud', () => {
     expect(hand.shortenLoop(approximateLoop()).status).toBe('degenerate-loop');
   });
 });
+
+describe('a loop on a rough, sparse cloud', () => {
+  it('that grows instead of shortening is given up, not followed until the memory runs out', () => {
+    // tree_woodske_SW, source 10934: its approximate loop, projected after each resampling onto the MLS
+    // surface of other branches, doubled in length at every step (68 points to a million in 40 steps).
+    const file = path.join(sharedData, 'pointclouds', 'tree_woodske_SW.ply');
+    const shape = parseShape(new Uint8Array(readFileSync(file)), path.basename(file));
+    if (shape.kind !== 'cloud') throw new Error(`${file} holds a mesh`);
+    const tree = core.openCloud(shape);
+    try {
+      const stages = tree.separatorStages(10934);
+      expect(stages.status).toBe('shorten-failed');
+      expect(stages.message).toContain('grew instead of shortening');
+      const replay = tree.shortenLoop(stages.approxLoop, { sphere: stages.sphere, recordEvery: 1 });
+      expect(replay.status).toBe('not-converged');
+      // Given up once over 4 times the first projection's length.
+      const lengths = replay.iterates.map(closedLength);
+      expect(lengths.at(-1)!).toBeGreaterThan(4 * lengths[0]);
+      expect(Math.max(...lengths.slice(0, -1))).toBeLessThanOrEqual(4 * lengths[0]);
+      expect(core.memoryMB()).toBeLessThan(1024);
+    } finally {
+      tree.dispose();
+    }
+  });
+});

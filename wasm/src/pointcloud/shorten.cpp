@@ -34,6 +34,11 @@ constexpr size_t kMinPoints = 6;
 constexpr double kSettledMove = 1e-3;
 constexpr double kSettledDecrease = 1e-4;
 constexpr int kMaxIterations = 5000;
+// A loop that grows past this many times its length after the first projection is not being shortened:
+// on a rough, sparse cloud (tree_woodske_SW, one source of 20,594 points) each resampled loop projected
+// onto the MLS surface of other branches zig-zagged to twice the length of the one before, 68 points to
+// a million in 40 steps, until the core ran out of memory. Such a loop is given up as not converging.
+constexpr double kMaxGrowth = 4;
 // A loop shorter than this encloses nothing the cloud resolves: a tube that thin has under one spacing
 // of radius, and the mesh prunes loops shorter than 3 mean edge lengths by default (pruneLengthFactor).
 constexpr double kDegenerateLength = 3;
@@ -322,6 +327,8 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
   std::vector<MlsPoint> loop = projected(mls, y, caches);
   Polyline x = positionsOf(loop);
   if (recordEvery > 0) result.iterates.push_back(x);
+  const double longestLoop = kMaxGrowth * loopLength(x);
+  bool diverged = false;
 
   Polyline trial;
   double step = 1;
@@ -365,6 +372,10 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
     }
     result.iterations++;
     if (recordEvery > 0 && result.iterations % recordEvery == 0) result.iterates.push_back(x);
+    if (loopLength(x) > longestLoop) {
+      diverged = true;
+      break;
+    }
   }
   if (recordEvery > 0 && result.iterations % recordEvery != 0) result.iterates.push_back(x);
 
@@ -373,6 +384,12 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
     result.failureKind = ShortenedCloudLoop::Failure::Degenerate;
     result.failure = "the loop shrank to a point: it encloses no feature inside the constraint region";
     result.length = 0;
+    return result;
+  }
+  if (diverged) {
+    result.failureKind = ShortenedCloudLoop::Failure::NotConverged;
+    result.failure = "the loop grew instead of shortening (the cloud's surface is too rough or sparse here)";
+    result.loop = x;
     return result;
   }
   if (result.iterations == kMaxIterations && !settled) {

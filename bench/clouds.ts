@@ -21,6 +21,7 @@ import { defaultCloudOptions } from '../lib/core/options.ts';
 import type { CloudArrays } from '../lib/core/types.ts';
 import { checkCloud } from '../lib/io/cloud-check.ts';
 import { parseMesh, parseShape } from '../lib/io/index.ts';
+import { boundingBoxDiagonal } from '../lib/io/repair.ts';
 import { parseSkeleton } from '../lib/io/skeleton.ts';
 import { geometricMean, leafIndices, meanDistanceToSkeleton, median } from './metrics.ts';
 import { repoRoot, runPinned, shell, venvPython, type Run } from './process.ts';
@@ -75,19 +76,10 @@ function score(core: Core, row: Row, mesh: MeshArrays | null, cloud: CloudArrays
     row.cycles = atCloud.cycles;
     row.leaves = leafIndices(skeleton.nodes.length / 3, skeleton.edges).length;
     if (mesh) row.againstMesh = core.evaluate(mesh, input).reconError;
-    if (reference) row.toReference = meanDistanceToSkeleton(reference, skeleton, boxDiagonal(cloud.positions));
+    if (reference) row.toReference = meanDistanceToSkeleton(reference, skeleton, boundingBoxDiagonal(cloud.positions));
   } catch (error) {
     row.note = `not scored: ${error instanceof Error ? error.message : String(error)}`;
   }
-}
-
-function boxDiagonal(positions: ArrayLike<number>): number {
-  const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < positions.length; i++) {
-    low[i % 3] = Math.min(low[i % 3], positions[i]);
-    high[i % 3] = Math.max(high[i % 3], positions[i]);
-  }
-  return Math.hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
 }
 
 function markdown(rows: Row[], machine: string, argv: string[]): string {

@@ -308,7 +308,6 @@ async function openSample(sample: Sample): Promise<boolean> {
 
 const canCompute = () => !!viewer.surface && !mesh?.surfaceError && !offer.pending;
 
-
 /** The stage shown: the one wanted, or the last one the stage-1 run reached when it stopped earlier. */
 function shownStage(): StageKey {
   if (stageDef(wanted).group === 'source' && single.reply && !single.has(wanted)) return single.reached!;

@@ -1,7 +1,8 @@
 /**
  * Stage 1 from one source vertex or point (the teaching half of the timeline): runs it in the worker
- * for a clicked or random vertex of a mesh or point of a cloud, re-runs the same source when a stage-1 option changes (per-mesh data is
- * cached in the core, so that is quick), and builds the layers of every intermediate result.
+ * for a clicked or random vertex of a mesh or point of a cloud, re-runs the same source when a stage-1
+ * option changes (per-shape data is cached in the core, so that is quick), and builds the layers of
+ * every intermediate result.
  */
 import { SOURCE_STAGES, type StageKey } from './stage-defs.ts';
 import { changedOptions, type StudioContext } from './studio-context.ts';

@@ -324,7 +324,7 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
     return this.unwrap(this.live().project(points)) as { points: Polyline; normals: Float64Array; quadratic: Uint8Array };
   }
 
-  shortenLoop(polyline: Polyline, options: { sphere?: Sphere | null; recordEvery?: number } = {}): ShortenedCloudLoop {
+  shortenLoop(polyline: Polyline, options: { sphere?: Sphere | null; recordFrames?: number } = {}): ShortenedCloudLoop {
     return this.unwrap(this.live().shortenLoop(polyline, options)) as ShortenedCloudLoop;
   }
 
@@ -332,8 +332,8 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
     return this.unwrap(this.live().neighbourhood()) as CloudNeighbourhood;
   }
 
-  separatorStages(source: number, options: Partial<Options> = {}): CloudSeparatorStages {
-    return this.unwrap(this.live().separatorStages(source, options)) as CloudSeparatorStages;
+  separatorStages(source: number, options: Partial<Options> = {}, recordFrames = 0): CloudSeparatorStages {
+    return this.unwrap(this.live().separatorStages(source, options, recordFrames)) as CloudSeparatorStages;
   }
 }
 

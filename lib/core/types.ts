@@ -160,7 +160,7 @@ export interface ShortenedCloudLoop {
   areas: [number, number];
   /** Gradient steps taken. */
   iterations: number;
-  /** With `recordEvery`: the loop as resampled from the input, every recordEvery-th step after it and the last one. */
+  /** With `recordFrames`: the loop as resampled from the input, evenly spaced steps and the last, at most recordFrames loops. */
   iterates: Polyline[];
 }
 
@@ -413,6 +413,8 @@ export interface CloudSeparatorStages {
   centroidInside: boolean;
   /** Descent steps of the shortening. */
   iterations: number;
+  /** With `recordFrames`: the shortening's loops, as ShortenedCloudLoop.iterates. */
+  iterates: Polyline[];
   /** Milliseconds per stage. */
   timings: Record<string, number>;
 }
@@ -442,13 +444,14 @@ export interface Cloud {
   project(points: Polyline): { points: Polyline; normals: Float64Array; quadratic: Uint8Array };
   /**
    * A closed polyline (xyz triples, at least 3 points, last not repeating the first) shortened on the
-   * cloud, kept near `sphere` by the paper's penalty; `recordEvery` > 0 keeps iterates for animation.
+   * cloud, kept near `sphere` by the paper's penalty; `recordFrames` (0, or 2 and more) keeps that many
+   * iterates for animation.
    */
-  shortenLoop(polyline: Polyline, options?: { sphere?: Sphere | null; recordEvery?: number }): ShortenedCloudLoop;
+  shortenLoop(polyline: Polyline, options?: { sphere?: Sphere | null; recordFrames?: number }): ShortenedCloudLoop;
   /** The graph the cut locus and loops run on (built on first use). */
   neighbourhood(): CloudNeighbourhood;
-  /** Stage 1 for one source, every step kept (tests, teaching views, `cscd separator`). */
-  separatorStages(source: number, options?: Partial<Options>): CloudSeparatorStages;
+  /** Stage 1 for one source, every step kept (tests, teaching views, `cscd separator`), with `recordFrames` of the shortening's loops. */
+  separatorStages(source: number, options?: Partial<Options>, recordFrames?: number): CloudSeparatorStages;
   /** Frees the WASM-side object; the Cloud must not be used afterwards. */
   dispose(): void;
 }

@@ -145,15 +145,27 @@ describe('a loop around a tube', () => {
     expect(Math.abs(result.areas[0] + result.areas[1] - 12 * Math.PI) / (12 * Math.PI)).toBeLessThan(0.08);
   });
 
-  it('is deterministic and records iterates when asked', () => {
-    const first = tube.shortenLoop(tilted, { recordEvery: 5 });
-    const second = tube.shortenLoop(tilted);
-    expect(second.loop).toEqual(first.loop);
-    expect(second.iterates).toEqual([]);
-    // The resampled input, every 5th step, and the last.
-    expect(first.iterates).toHaveLength(1 + Math.ceil(first.iterations / 5));
-    expect(first.iterates.at(-1)).toEqual(first.loop);
-    expect(closedLength(first.iterates[0])).toBeGreaterThan(closedLength(first.iterates.at(-1)!));
+  it('is deterministic and records iterates when asked, evenly spaced, at most as many as asked', () => {
+    const every = tube.shortenLoop(tilted, { recordFrames: 1e6 });
+    const few = tube.shortenLoop(tilted, { recordFrames: 5 });
+    const none = tube.shortenLoop(tilted);
+    expect(none.loop).toEqual(every.loop);
+    expect(few.loop).toEqual(every.loop);
+    expect(none.iterates).toEqual([]);
+    // The resampled input, then every step.
+    expect(every.iterations).toBeGreaterThan(8);
+    expect(every.iterates).toHaveLength(1 + every.iterations);
+    expect(every.iterates.at(-1)).toEqual(every.loop);
+    expect(closedLength(every.iterates[0])).toBeGreaterThan(closedLength(every.iterates.at(-1)!));
+    // Five of them: the input, steps a power-of-two stride apart, and the last.
+    expect(few.iterates.length).toBeLessThanOrEqual(5);
+    expect(few.iterates.length).toBeGreaterThanOrEqual(3);
+    const kept = few.iterates.slice(0, -1);
+    const strides = [1, 2, 4, 8, 16, 32, 64].filter((stride) =>
+      kept.every((loop, j) => j * stride < every.iterates.length && closedLength(loop) === closedLength(every.iterates[j * stride])));
+    expect(strides).toHaveLength(1);
+    expect(kept.length * strides[0]).toBeGreaterThan(every.iterations / 2);
+    expect(few.iterates.at(-1)).toEqual(every.loop);
   });
 
   it('refuses a loop of fewer than 3 points, non-finite points and a sphere without a positive radius', () => {
@@ -162,7 +174,7 @@ describe('a loop around a tube', () => {
     expect(() => tube.shortenLoop(tilted, { sphere: { center: [0, 0, 0], radius: 0 } })).toThrow(
       new CoreError('the sphere needs a finite centre and a positive radius'),
     );
-    expect(() => tube.shortenLoop(tilted, { recordEvery: 0.5 })).toThrow(CoreError);
+    for (const recordFrames of [0.5, 1, -2]) expect(() => tube.shortenLoop(tilted, { recordFrames })).toThrow(CoreError);
   });
 });
 
@@ -171,7 +183,7 @@ describe('a loop around nothing', () => {
     const cloud = core.openCloud(spherePoints(3000, 3));
     try {
       const h = Math.sqrt(1 - 0.3 ** 2);
-      const result = cloud.shortenLoop(loopOf(30, (t) => [0.3 * Math.cos(t), 0.3 * Math.sin(t), h]), { recordEvery: 1 });
+      const result = cloud.shortenLoop(loopOf(30, (t) => [0.3 * Math.cos(t), 0.3 * Math.sin(t), h]), { recordFrames: 1e6 });
       expect(result.status).toBe('degenerate-loop');
       expect(result.message).toMatch(/shrank to a point/);
       expect(result.loop).toHaveLength(0);
@@ -282,7 +294,7 @@ describe('a loop on a rough, sparse cloud', () => {
       const stages = tree.separatorStages(10934);
       expect(stages.status).toBe('shorten-failed');
       expect(stages.message).toContain('grew instead of shortening');
-      const replay = tree.shortenLoop(stages.approxLoop, { sphere: stages.sphere, recordEvery: 1 });
+      const replay = tree.shortenLoop(stages.approxLoop, { sphere: stages.sphere, recordFrames: 1e6 });
       expect(replay.status).toBe('not-converged');
       // Given up once over 4 times the first projection's length.
       const lengths = replay.iterates.map(closedLength);

@@ -357,6 +357,19 @@ std::vector<geometrycentral::Vector3> toPoints(const val& xyz, const char* what)
   return points;
 }
 
+val iteratesOf(const std::vector<std::vector<geometrycentral::Vector3>>& loops) {
+  val iterates = val::array();
+  for (const auto& loop : loops) iterates.call<void>("push", toFloat64Array(loop));
+  return iterates;
+}
+
+// How many loops of a shortening to record: 0, or a whole number from 2 (the first and the last) up.
+int checkedFrames(double frames) {
+  if (!(frames == 0 || (frames >= 2 && frames <= 1e6)) || frames != std::floor(frames))
+    throw InputError("recordFrames must be 0 (record nothing) or a whole number of loops from 2 up");
+  return int(frames);
+}
+
 const char* shortenStatusName(ShortenedCloudLoop::Failure failure) {
   switch (failure) {
   case ShortenedCloudLoop::Failure::None: return "ok";
@@ -374,9 +387,7 @@ val toVal(const ShortenedCloudLoop& r) {
   o.set("length", r.length);
   o.set("areas", toArray(r.areas));
   o.set("iterations", r.iterations);
-  val iterates = val::array();
-  for (const auto& iterate : r.iterates) iterates.call<void>("push", toFloat64Array(iterate));
-  o.set("iterates", iterates);
+  o.set("iterates", iteratesOf(r.iterates));
   return o;
 }
 
@@ -425,6 +436,7 @@ val toVal(const CloudSeparatorStages& r, const CloudNeighbourhood& neighbourhood
   o.set("score", r.score);
   o.set("centroidInside", r.centroidInside);
   o.set("iterations", r.iterations);
+  o.set("iterates", iteratesOf(r.iterates));
   o.set("timings", toVal(r.timings));
   return o;
 }
@@ -498,10 +510,12 @@ public:
     return reportingErrors([&] { return toVal(cloud->neighbourhood()); });
   }
 
-  // Stage 1 for one source up to the approximate loop, every step kept (tests, teaching views).
-  val separatorStages(double source, const val& options) {
+  // Stage 1 for one source, every step kept (tests, teaching views), with at most recordFrames loops of
+  // the shortening (0: none).
+  val separatorStages(double source, const val& options, double recordFrames) {
     return reportingErrors([&] {
-      return toVal(computeCloudSeparatorStages(*cloud, checkedPoint(source), toOptions(options)), cloud->neighbourhood());
+      return toVal(computeCloudSeparatorStages(*cloud, checkedPoint(source), toOptions(options), true, checkedFrames(recordFrames)),
+                   cloud->neighbourhood());
     });
   }
 
@@ -546,16 +560,14 @@ public:
     });
   }
 
-  // A closed polyline (xyz triples) shortened on the cloud; options: {sphere: {center, radius}, recordEvery}.
+  // A closed polyline (xyz triples) shortened on the cloud; options: {sphere: {center, radius}, recordFrames}.
   val shortenLoop(const val& polyline, const val& options) {
     return reportingErrors([&] {
       const bool given = !options.isUndefined() && !options.isNull();
       const std::optional<Sphere> sphere = toSphere(given ? options["sphere"] : val::undefined());
-      const val every = given ? options["recordEvery"] : val::undefined();
-      const double recordEvery = every.isUndefined() ? 0 : every.as<double>();
-      if (!(recordEvery >= 0 && recordEvery <= 1e6) || recordEvery != std::floor(recordEvery))
-        throw InputError("recordEvery must be a whole number of steps (0: record nothing)");
-      return toVal(cscd::shortenLoop(*cloud, toPoints(polyline, "a loop's points"), sphere, int(recordEvery)));
+      const val frames = given ? options["recordFrames"] : val::undefined();
+      return toVal(cscd::shortenLoop(*cloud, toPoints(polyline, "a loop's points"), sphere,
+                                     checkedFrames(frames.isUndefined() ? 0 : frames.as<double>())));
     });
   }
 

@@ -36,7 +36,7 @@ export interface CloudHandle {
   project(points: Float64Array): object | CoreFailure;
   shortenLoop(polyline: Float64Array, options: object): object | CoreFailure;
   neighbourhood(): object | CoreFailure;
-  separatorStages(source: number, options: object): object | CoreFailure;
+  separatorStages(source: number, options: object, recordFrames: number): object | CoreFailure;
   delete(): void;
 }
 

@@ -23,7 +23,8 @@ CloudSeparatorStages& fail(CloudSeparatorStages& result, SeparatorStatus status,
 
 } // namespace
 
-CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options, bool shorten) {
+CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options, bool shorten,
+                                                 int recordFrames) {
   CloudSeparatorStages result;
   result.source = source;
   StageClock clock(result.timings);
@@ -82,9 +83,10 @@ CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, co
     clock.lap("loop");
     return fail(result, SeparatorStatus::DegenerateLoop, "the approximate loop has fewer than 3 points");
   }
-  ShortenedCloudLoop shortened = shortenLoop(cloud, approximate, result.sphere);
+  ShortenedCloudLoop shortened = shortenLoop(cloud, approximate, result.sphere, recordFrames);
   clock.lap("loop");
   result.iterations = shortened.iterations;
+  result.iterates = std::move(shortened.iterates);
   if (shortened.failureKind == ShortenedCloudLoop::Failure::Degenerate)
     return fail(result, SeparatorStatus::DegenerateLoop, shortened.failure);
   if (shortened.failureKind == ShortenedCloudLoop::Failure::NotConverged)

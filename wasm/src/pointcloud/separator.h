@@ -38,10 +38,13 @@ struct CloudSeparatorStages {
   double score = 0;
   bool centroidInside = false;
   int iterations = 0; // of the shortening
+  std::vector<std::vector<geometrycentral::Vector3>> iterates; // its steps, when recordFrames > 0 (shorten.h)
   std::vector<std::pair<std::string, double>> timings; // milliseconds per stage, in order
 };
 
 // `shorten` false: stop at the approximate loop (the cut-locus views and tests need no more).
-CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options, bool shorten = true);
+// `recordFrames` > 0 keeps that many of the shortening's steps for the page to show (shortenLoop).
+CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options, bool shorten = true,
+                                                 int recordFrames = 0);
 
 } // namespace cscd

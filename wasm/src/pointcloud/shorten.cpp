@@ -306,9 +306,36 @@ std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop,
   return {std::min(area[0], area[1]), std::max(area[0], area[1])};
 }
 
+// Keeps the first loop, every stride-th step after it and the last, at most `capacity` loops in all: when
+// more would be kept, every other one is dropped and the stride doubles, so they stay evenly spaced in
+// steps without knowing beforehand how many steps there will be. Capacity 0 keeps nothing.
+class IterateRecorder {
+public:
+  explicit IterateRecorder(int capacity) : capacity_(capacity) {}
+
+  void record(int iteration, const Polyline& x) {
+    if (capacity_ == 0 || iteration % stride_ != 0) return;
+    kept_.push_back(x);
+    if (int(kept_.size()) < capacity_) return; // a place stays free for the last loop
+    for (size_t i = 1; 2 * i < kept_.size(); i++) kept_[i] = std::move(kept_[2 * i]);
+    kept_.resize((kept_.size() + 1) / 2);
+    stride_ *= 2;
+  }
+
+  std::vector<Polyline> finish(int iteration, const Polyline& x) {
+    if (capacity_ > 0 && (kept_.empty() || int(kept_.size() - 1) * stride_ != iteration)) kept_.push_back(x);
+    return std::move(kept_);
+  }
+
+private:
+  int capacity_;
+  int stride_ = 1;
+  std::vector<Polyline> kept_; // kept_[j] is the loop after j * stride_ steps
+};
+
 } // namespace
 
-ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std::optional<Sphere>& sphere, int recordEvery) {
+ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std::optional<Sphere>& sphere, int recordFrames) {
   if (polyline.size() < 3) throw InputError("a loop needs at least 3 points");
   for (const Vector3& p : polyline)
     if (!isfinite(p)) throw InputError("the loop has a non-finite coordinate");
@@ -326,7 +353,8 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
   Polyline y = resampled(positionsOf(projected(mls, polyline, caches)), spacing);
   std::vector<MlsPoint> loop = projected(mls, y, caches);
   Polyline x = positionsOf(loop);
-  if (recordEvery > 0) result.iterates.push_back(x);
+  IterateRecorder recorder(recordFrames);
+  recorder.record(0, x);
   const double longestLoop = kMaxGrowth * loopLength(x);
   bool diverged = false;
 
@@ -371,13 +399,13 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
       x = positionsOf(loop);
     }
     result.iterations++;
-    if (recordEvery > 0 && result.iterations % recordEvery == 0) result.iterates.push_back(x);
+    recorder.record(result.iterations, x);
     if (loopLength(x) > longestLoop) {
       diverged = true;
       break;
     }
   }
-  if (recordEvery > 0 && result.iterations % recordEvery != 0) result.iterates.push_back(x);
+  result.iterates = recorder.finish(result.iterations, x);
 
   result.length = loopLength(x);
   if (result.length < kDegenerateLength * spacing) {

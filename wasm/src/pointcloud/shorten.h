@@ -22,8 +22,8 @@ struct ShortenedCloudLoop {
   enum class Failure { None, Degenerate, NotConverged } failureKind = Failure::None;
   std::string failure; // what happened, for the user; empty on success
   int iterations = 0;  // gradient steps taken
-  // The loop as resampled from the input, every recordEvery-th iterate after it and the last one: for
-  // animating the shortening. Empty unless asked for.
+  // For animating the shortening: the loop as resampled from the input, evenly spaced steps after it and
+  // the last one, at most recordFrames loops in all. Empty unless asked for.
   std::vector<std::vector<geometrycentral::Vector3>> iterates;
 };
 
@@ -33,8 +33,9 @@ struct ShortenedCloudLoop {
 // tangent plane and every step projected back onto that surface, the loop resampled to about one spacing.
 // With a sphere, points outside it pay the paper's penalty lambda max(0, |x_i - c| - r)^2 (lambda = 10, in
 // spacings). Choices and measurements: docs/pointcloud.md, "Loop shortening on clouds".
-// Throws InputError when the polyline has fewer than 3 points or non-finite ones, or the sphere no positive radius.
+// recordFrames is 0 or at least 2. Throws InputError when the polyline has fewer than 3 points or
+// non-finite ones, or the sphere no positive radius.
 ShortenedCloudLoop shortenLoop(Cloud& cloud, const std::vector<geometrycentral::Vector3>& polyline,
-                               const std::optional<Sphere>& sphere, int recordEvery = 0);
+                               const std::optional<Sphere>& sphere, int recordFrames = 0);
 
 } // namespace cscd

@@ -349,7 +349,7 @@ function toWire(s: Separator): SeparatorData {
   };
 }
 
-/** Iterates of a cloud's loop shortening sent to the page, at most (every k-th step is kept). */
+/** Loops of a cloud's shortening sent to the page, at most (evenly spaced steps, the first and the last). */
 const SHORTENING_FRAMES = 60;
 
 /** Length of a closed polyline (xyz triples). */
@@ -365,14 +365,10 @@ function closedLength(p: ArrayLike<number>): number {
 
 /**
  * Stage 1 from one point of the open cloud, as a mesh's run travels to the page (a cloud's separator is
- * always a loop: no boundary ends), with the shortening's iterates: the same descent run again from the
- * approximate loop, every k-th step kept (deterministic, so it ends on the stages' loop).
+ * always a loop: no boundary ends), with loops recorded along the shortening.
  */
 function cloudSeparatorData(cloud: OpenCloud, source: number, options: CloudOptions): SeparatorData {
-  const s = cloud.cloud.separatorStages(source, options);
-  const shortened = s.approxLoop.length >= 9 && s.iterations > 0
-    ? cloud.cloud.shortenLoop(s.approxLoop, { sphere: s.sphere, recordEvery: Math.max(1, Math.ceil(s.iterations / SHORTENING_FRAMES)) })
-    : null;
+  const s = cloud.cloud.separatorStages(source, options, SHORTENING_FRAMES);
   const c = s.cutLocus;
   return {
     source,
@@ -397,7 +393,7 @@ function cloudSeparatorData(cloud: OpenCloud, source: number, options: CloudOpti
     score: s.score,
     centroidInside: s.centroidInside,
     timings: { ...s.timings },
-    iterates: shortened ? shortened.iterates.map(f32) : [],
+    iterates: s.iterates.map(f32),
   };
 }
 

@@ -41,6 +41,13 @@ const nextTask = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
  */
 const PROGRESS_REDRAW_MS = { gpu: 400, software: 1500 };
 
+/**
+ * Least time between two updates of the progress bar, its text and the timeline while news arrives: a
+ * pool sends news every round, some 20 a second on a small mesh, and on a software renderer each update
+ * is a frame drawn on the workers' cores too.
+ */
+const PROGRESS_TEXT_MS = { gpu: 100, software: 500 };
+
 const isSkeletonLayer = (name: string) => name.startsWith('sk-');
 
 const sentence = (text: string) => `${text.charAt(0).toUpperCase()}${text.slice(1)}.`;
@@ -79,6 +86,8 @@ export class WholeShape {
   private runs = 0;
   private redrawTimer: number | null = null;
   private lastRedraw = -Infinity;
+  private newsTimer: number | null = null;
+  private lastNewsShown = -Infinity;
   /** Measured cost of the last redraw of the candidate loops (ms). */
   private frameCost = 0;
 
@@ -101,6 +110,7 @@ export class WholeShape {
   /** The options changed: stop any run and drop the result, its layers and evaluation. */
   invalidate(): void {
     this.cancelRedraw();
+    this.cancelNews();
     this.job?.cancel();
     this.job = null;
     this.runPromise = null;
@@ -187,6 +197,7 @@ export class WholeShape {
       }
     } finally {
       if (id === this.jobId) {
+        this.cancelNews();
         this.job = null;
         this.progress = null;
         this.panel.endRun(keepProgress);
@@ -211,10 +222,11 @@ export class WholeShape {
     }
     this.lastNews = news;
     this.progress = news.total > 0 ? news.done / news.total : 0;
-    this.panel.setProgress(news.done, news.total, this.auto ? 'stage 1 · auto: ends when loops stop adding coverage' : 'stage 1');
-    if (news.finished) this.panel.setStage2();
-    if (this.cancelRequested) this.panel.cancelling();
-    this.ctx.progressed();
+    if (news.finished) this.showNews();
+    else if (this.newsTimer === null) {
+      const every = PROGRESS_TEXT_MS[this.ctx.viewer.software ? 'software' : 'gpu'];
+      this.newsTimer = window.setTimeout(() => this.showNews(), Math.max(0, this.lastNewsShown + every - performance.now()));
+    }
     if (!this.progressLoops) return;
     const before = this.progressLoops.count;
     news.newLoops.forEach((loop, i) => this.progressLoops!.add(loop, news.newClosed[i] === 1));
@@ -226,6 +238,23 @@ export class WholeShape {
       const wait = Math.max(0, this.lastRedraw + every - performance.now());
       this.redrawTimer = window.setTimeout(() => this.drawProgress(), wait);
     }
+  }
+
+  /** The latest news in the panel and the timeline. */
+  private showNews(): void {
+    this.cancelNews();
+    this.lastNewsShown = performance.now();
+    const news = this.lastNews;
+    if (!news) return;
+    this.panel.setProgress(news.done, news.total, this.auto ? 'stage 1 · auto: ends when loops stop adding coverage' : 'stage 1');
+    if (news.finished) this.panel.setStage2();
+    if (this.cancelRequested) this.panel.cancelling();
+    this.ctx.progressed();
+  }
+
+  private cancelNews(): void {
+    if (this.newsTimer !== null) window.clearTimeout(this.newsTimer);
+    this.newsTimer = null;
   }
 
   private drawProgress(): void {

@@ -1,6 +1,6 @@
 // Noisy clouds (docs/pointcloud.md, "Noisy clouds"): the neighbourhood graph's bridge test on the MLS
 // surface where the noise hides the curvature, so that the graph of a noisy cloud holds together; clean
-// clouds keep the graph they had.
+// clouds keep the graph they had. Farther targets where the nearest loops enclose nothing.
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core } from '../../lib/core/node.ts';
 import { fixture } from '../paths.ts';
@@ -42,6 +42,38 @@ describe('noisy clouds', () => {
       expect(graph.keptOnMls).toBeGreaterThan(1000);
     } finally {
       cloud.dispose();
+    }
+  });
+
+  it('tries farther targets where a loop encloses nothing (a ridge of the noise), each 1.5 times farther, as a mesh does', () => {
+    const shape = readCloud('hand_noise_subsample.ply');
+    const cloud = core.openCloud(shape);
+    const at = (p: number) => [0, 1, 2].map((k) => shape.positions[3 * p + k]);
+    const apart = (p: number, q: number) => Math.hypot(...at(p).map((x, k) => x - at(q)[k]));
+    try {
+      let fallbacks = 0;
+      for (let source = 0; source < cloud.facts.points; source += 97) {
+        const stages = cloud.separatorStages(source);
+        expect(stages.attempts).toBeLessThanOrEqual(6);
+        if (stages.status !== 'ok' || stages.attempts === 1) continue;
+        fallbacks++;
+        // The nearest target failed first; the one that made the separator is at least 1.5 times as far.
+        expect(apart(source, stages.target!)).toBeGreaterThanOrEqual(1.5 * apart(source, stages.targets[0]));
+      }
+      expect(fallbacks).toBeGreaterThanOrEqual(5);
+    } finally {
+      cloud.dispose();
+    }
+  });
+
+  it('gives the noisy hand no cycle: regions touch across a gap the graph bridges no more, and meet where they meet', () => {
+    // Before the contact rule and the tufted junctions (and the fall-back above): 1, 3, 0, 0, 1 cycles.
+    const hand = core.openCloud(readCloud('hand_noise_subsample.ply'));
+    try {
+      const cycles = [1, 2, 3, 4, 5].map((seed) => hand.skeleton({ n: 40, seed }).stats.cycles);
+      expect(cycles).toEqual([0, 0, 0, 0, 0]);
+    } finally {
+      hand.dispose();
     }
   });
 

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <map>
 #include <numeric>
+#include <set>
 
 using namespace geometrycentral;
 
@@ -90,13 +93,38 @@ Regions growRegions(const ElementGraph& graph, std::vector<double> distance, std
   for (size_t r = 0; r < regions.count; r++)
     if (regions.area[r] > 0) regions.centroid[r] /= regions.area[r];
 
+  // The elements of each side of each contact, where a contact needs more than one.
+  std::map<std::array<size_t, 2>, std::array<std::set<uint32_t>, 2>> sides;
   for (const auto& t : graph.triangles) {
     std::array<size_t, 3> l{label[t[0]], label[t[1]], label[t[2]]};
+    if (graph.minContact > 1)
+      for (uint32_t a : t)
+        for (uint32_t b : t)
+          if (label[a] < label[b]) {
+            auto& side = sides[{label[a], label[b]}];
+            side[0].insert(a);
+            side[1].insert(b);
+          }
     std::sort(l.begin(), l.end());
     if (l[0] != l[1]) regions.adjacent.insert({l[0], l[1]});
     if (l[1] != l[2]) regions.adjacent.insert({l[1], l[2]});
     if (l[0] != l[2]) regions.adjacent.insert({l[0], l[2]});
+  }
+  for (const auto& t : graph.junctionTriangles ? *graph.junctionTriangles : graph.triangles) {
+    std::array<size_t, 3> l{label[t[0]], label[t[1]], label[t[2]]};
+    std::sort(l.begin(), l.end());
     if (l[0] != l[1] && l[1] != l[2]) regions.junctions.insert(l);
+  }
+  // A contact too small to be a border counts where the two regions meet a third: beside a junction a
+  // region can touch another in a few elements only.
+  if (graph.minContact > 1) {
+    std::set<std::array<size_t, 2>> atJunction;
+    for (const auto& [a, b, c] : regions.junctions) atJunction.insert({{a, b}, {b, c}, {a, c}});
+    for (auto it = regions.adjacent.begin(); it != regions.adjacent.end();) {
+      const auto& side = sides.at(*it);
+      const bool border = std::min(side[0].size(), side[1].size()) >= graph.minContact;
+      it = border || atJunction.count(*it) ? std::next(it) : regions.adjacent.erase(it);
+    }
   }
   return regions;
 }

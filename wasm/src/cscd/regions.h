@@ -27,7 +27,9 @@ constexpr uint32_t kNoRegion = std::numeric_limits<uint32_t>::max();
 
 // The shape's elements as region growing needs them: positions and areas, each element's neighbours
 // (in a fixed order: ties go to the first), the connected component of each, and the triangles that
-// tell which regions touch and where three meet.
+// tell which regions touch and where three meet: two regions touch where triangles have elements of
+// both, at least `minContact` of each (1: any triangle will do) unless the two meet a third there;
+// three meet where a triangle of `junctionTriangles` (when given, else of `triangles`) has one of each.
 struct ElementGraph {
   const std::vector<geometrycentral::Vector3>& positions;
   const std::vector<double>& areas;
@@ -35,6 +37,8 @@ struct ElementGraph {
   const std::vector<std::array<uint32_t, 2>>& edges;
   const std::vector<int>& component;
   const std::vector<std::array<uint32_t, 3>>& triangles;
+  size_t minContact = 1;
+  const std::vector<std::array<uint32_t, 3>>* junctionTriangles = nullptr;
 };
 
 // Regions from the distance to the nearest of `separators` separators (+infinity where none reaches)

@@ -15,6 +15,12 @@ namespace cscd {
 // Targets must be reached by a detour: geodesic >= 1.2 x Euclidean distance (see rankTargets).
 constexpr double kMinDetour = 1.2;
 
+// When a target's loop fails (it encloses nothing: a spurious ridge), the next target tried is at least
+// this much farther away (its targetKey)...
+constexpr double kFallbackGrowth = 1.5;
+// ...up to this many targets in all.
+constexpr int kMaxTargets = 6;
+
 // What the targets are ranked by: Euclidean or geodesic distance from the source. `positions`: a mesh's
 // vertex positions or a cloud's point positions, anything that gives a vertex's Vector3 by its index.
 template <class Positions>

@@ -45,11 +45,6 @@ SeparatorResult& fail(SeparatorResult& result, SeparatorStatus status, std::stri
 
 } // namespace
 
-// When a target's loop is degenerate, the next target tried is at least this much farther away...
-constexpr double kFallbackGrowth = 1.5;
-// ...up to this many targets in all.
-constexpr int kMaxTargets = 6;
-
 // Boundary extremities are minima of the distance along the boundary within this many mean edge
 // lengths on either side.
 constexpr double kExtremityWindow = 3;

@@ -15,6 +15,13 @@ namespace cscd {
 
 namespace {
 
+// Two regions of a cloud touch where their contact holds at least this many points on either side (about
+// the shortest loop that encloses anything, kDegenerateLength in pointcloud/shorten.cpp, in spacings), or
+// where they meet a third: the graph keeps a few edges across the gap between two parts here and there
+// (two fingers of a noisy hand), through which regions touched in 1 or 2 points and closed spurious
+// cycles. Borders hold a dozen points or more. (docs/pointcloud.md, "Where regions touch")
+constexpr size_t kMinContactPoints = 3;
+
 Samples pointSamplesOf(Cloud& cloud) {
   Samples samples;
   const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();
@@ -89,15 +96,19 @@ Regions PointCloudRealization::regions(const Selection<Candidate>& packed) {
   std::set<std::array<size_t, 2>> kept;
   for (const auto& [a, b] : graph.edgeVertices) kept.insert({std::min(a, b), std::max(a, b)});
   auto inGraph = [&](size_t a, size_t b) { return kept.count({std::min(a, b), std::max(a, b)}) > 0; };
-  std::vector<std::array<uint32_t, 3>> triangles;
+  // Three regions meet where a tufted triangle has a point of each, whether or not the graph kept its
+  // edges: the graph leaves holes at creases and in noise, where three regions met unseen and their
+  // triangle stayed a cycle of the skeleton (horse_clean).
+  std::vector<std::array<uint32_t, 3>> triangles, tufted;
   for (surface::Face f : cloud.geometry().tuftedMesh->faces()) {
     std::array<uint32_t, 3> t;
     size_t k = 0;
     for (surface::Vertex v : f.adjacentVertices()) t[k++] = uint32_t(v.getIndex());
     if (inGraph(t[0], t[1]) && inGraph(t[1], t[2]) && inGraph(t[0], t[2])) triangles.push_back(t);
+    tufted.push_back(t);
   }
   const ElementGraph elements{pointSamples.positions, pointSamples.weights, neighbours, pointSamples.edges,
-                              neighbourhood.pointComponent(), triangles};
+                              neighbourhood.pointComponent(), triangles, kMinContactPoints, &tufted};
   return growRegions(elements, std::move(distance), std::move(seeds), packed.size());
 }
 

@@ -2,6 +2,7 @@
 
 #include "cscd/measures.h"
 #include "cscd/stage_clock.h"
+#include "cscd/target.h"
 #include "pointcloud/shorten.h"
 #include "pointcloud/target.h"
 #include "pointcloud/trace.h"
@@ -12,13 +13,49 @@
 namespace cscd {
 namespace {
 
-// Targets tried at most, as on a mesh.
-constexpr int kMaxTargets = 6;
-
 CloudSeparatorStages& fail(CloudSeparatorStages& result, SeparatorStatus status, std::string message) {
   result.status = status;
   result.message = std::move(message);
   return result;
+}
+
+// Trace the loop through one target and shorten it (unless `shorten` is false); returns the failure
+// status, or Ok. Every per-attempt field is set afresh, so a result never mixes two attempts.
+SeparatorStatus loopThrough(Cloud& cloud, size_t source, const CloudTarget& target, const Options& options, bool shorten,
+                            int recordFrames, CloudSeparatorStages& result) {
+  const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();
+  result.target = target.point;
+  result.sphere.reset();
+  result.loop.clear();
+  result.iterates.clear();
+  result.iterations = 0;
+  result.traced = traceCloudLoop(neighbourhood.graph(), result.distance, target.point, target.starts, source);
+  result.message = result.traced.failure;
+  if (!result.traced.failure.empty()) return SeparatorStatus::TraceFailed;
+  if (!shorten) return SeparatorStatus::Ok;
+
+  std::vector<geometrycentral::Vector3> approximate;
+  for (size_t p : result.traced.loop) approximate.push_back(neighbourhood.position(p));
+  if (options.sphere) {
+    const geometrycentral::Vector3 centre = neighbourhood.position(source);
+    double radius = 0;
+    for (const geometrycentral::Vector3& p : approximate) radius = std::max(radius, norm(p - centre));
+    result.sphere = Sphere{centre, radius};
+  }
+  if (approximate.size() < 3) {
+    result.message = "the approximate loop has fewer than 3 points";
+    return SeparatorStatus::DegenerateLoop;
+  }
+  ShortenedCloudLoop shortened = shortenLoop(cloud, approximate, result.sphere, recordFrames);
+  result.iterations = shortened.iterations;
+  result.iterates = std::move(shortened.iterates);
+  result.message = shortened.failure;
+  if (shortened.failureKind == ShortenedCloudLoop::Failure::Degenerate) return SeparatorStatus::DegenerateLoop;
+  if (shortened.failureKind == ShortenedCloudLoop::Failure::NotConverged) return SeparatorStatus::ShortenFailed;
+  result.loop = std::move(shortened.loop);
+  result.length = shortened.length;
+  result.areas = shortened.areas;
+  return SeparatorStatus::Ok;
 }
 
 } // namespace
@@ -48,53 +85,27 @@ CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, co
                 "no point of the cut locus is reached around a feature with opposite gradients on its two sides");
   }
 
-  // The nearest target whose descents reach the source and make a loop.
+  // The paper's target is the nearest; when its descents make no loop, the next is traced. On a noisy
+  // cloud most of the nearest targets are ridges of the noise, whose loops enclose nothing: there, as on a
+  // mesh, a failed loop of any kind sends the search on to a target clearly farther than the failure
+  // (docs/pointcloud.md, "Noisy clouds"). A clean cloud's failed loop ends the search: farther targets
+  // made its skeletons worse (fewer sources in auto mode).
+  const bool fallBack = neighbourhood.noisyCloud();
+  SeparatorStatus status = SeparatorStatus::Ok;
+  double lastFailedKey = 0;
   for (const CloudTarget& t : targets) {
     if (result.attempts == kMaxTargets) break;
+    const double key = targetKey(neighbourhood.positions(), result.distance, source, t.point, options.target);
+    if (fallBack && result.attempts > 0 && key < kFallbackGrowth * lastFailedKey) continue;
     result.attempts++;
-    TracedLoop traced = traceCloudLoop(neighbourhood.graph(), result.distance, t.point, t.starts, source);
-    if (!traced.failure.empty()) {
-      result.message = traced.failure;
-      continue;
-    }
-    result.target = t.point;
-    result.traced = std::move(traced);
-    result.message.clear();
-    break;
+    status = loopThrough(cloud, source, t, options, shorten, recordFrames, result);
+    if (status == SeparatorStatus::Ok || (!fallBack && status != SeparatorStatus::TraceFailed)) break;
+    lastFailedKey = key;
   }
-  if (!result.target) {
-    clock.lap("loop");
-    return fail(result, SeparatorStatus::TraceFailed, result.message);
-  }
-  if (!shorten) {
-    clock.lap("loop");
-    return result;
-  }
-
-  std::vector<geometrycentral::Vector3> approximate;
-  for (size_t p : result.traced.loop) approximate.push_back(neighbourhood.position(p));
-  if (options.sphere) {
-    const geometrycentral::Vector3 centre = neighbourhood.position(source);
-    double radius = 0;
-    for (const geometrycentral::Vector3& p : approximate) radius = std::max(radius, norm(p - centre));
-    result.sphere = Sphere{centre, radius};
-  }
-  if (approximate.size() < 3) {
-    clock.lap("loop");
-    return fail(result, SeparatorStatus::DegenerateLoop, "the approximate loop has fewer than 3 points");
-  }
-  ShortenedCloudLoop shortened = shortenLoop(cloud, approximate, result.sphere, recordFrames);
   clock.lap("loop");
-  result.iterations = shortened.iterations;
-  result.iterates = std::move(shortened.iterates);
-  if (shortened.failureKind == ShortenedCloudLoop::Failure::Degenerate)
-    return fail(result, SeparatorStatus::DegenerateLoop, shortened.failure);
-  if (shortened.failureKind == ShortenedCloudLoop::Failure::NotConverged)
-    return fail(result, SeparatorStatus::ShortenFailed, shortened.failure);
+  if (status != SeparatorStatus::Ok) return fail(result, status, result.message);
+  if (!shorten) return result;
 
-  result.loop = std::move(shortened.loop);
-  result.length = shortened.length;
-  result.areas = shortened.areas;
   result.score = separatorScore(result.areas, result.length);
   result.centroidInside = cloud.winding()(loopCentroid(result.loop, true)) > 0.5;
   clock.lap("measures");

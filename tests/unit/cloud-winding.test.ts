@@ -70,6 +70,26 @@ describe('winding numbers of a point cloud', () => {
     }
   });
 
+  it('orients the sparse, open tree_woodske_HS outwards: about 1 inside its branches', () => {
+    // Its normals enclose a negative "volume" (an open scan of thin branches): the volume rule alone
+    // turned it inside out, about -1 at the centroid of every loop around a branch.
+    const tree = core.openCloud(readCloud(path.join(sharedData, 'pointclouds', 'tree_woodske_HS.ply')));
+    try {
+      const inside: number[] = [];
+      for (let source = 0; source < tree.facts.points && inside.length < 6; source += 605) {
+        const stages = tree.separatorStages(source);
+        if (stages.status !== 'ok' || stages.length > 40 * tree.facts.meanSpacing) continue; // around one branch
+        const n = stages.loop.length / 3;
+        const centroid = [0, 1, 2].map((k) => stages.loop.filter((_, i) => i % 3 === k).reduce((a, b) => a + b, 0) / n);
+        inside.push(tree.windingNumbers(Float64Array.from(centroid))[0]);
+      }
+      expect(inside.length).toBe(6);
+      for (const w of inside) expect(w).toBeGreaterThan(0.5);
+    } finally {
+      tree.dispose();
+    }
+  }, 60_000);
+
   it('is about 1 at the centre of a sphere cloud and 0 outside it', () => {
     const sphere = spherePoints(3000, 7);
     const cloud = core.openCloud({ positions: sphere.positions, normals: null });

@@ -13,8 +13,9 @@ namespace cscd {
 //
 // It needs normals of one orientation, which neither PCA nor every scan gives: they are oriented by
 // propagation along a minimum spanning tree of the neighbour graph weighted by 1 - |n_i . n_j| (Hoppe et
-// al. 1992), each tree's sign chosen so that its normals enclose a positive volume (sum a_i n_i . x_i =
-// 3 V, divergence theorem). Areas: the cloud's point areas.
+// al. 1992), each tree's sign chosen so that its winding number is positive just inside its points, or
+// where that does not decide (an open sheet) so that its normals enclose a positive volume (sum a_i n_i .
+// x_i = 3 V, divergence theorem). Areas: the cloud's point areas.
 class PointWinding {
 public:
   explicit PointWinding(Cloud& cloud);
@@ -25,6 +26,8 @@ public:
   const std::vector<geometrycentral::Vector3>& normals() const { return normal; }
 
 private:
+  bool outward(const std::vector<size_t>& tree, double spacing) const;
+
   std::vector<geometrycentral::Vector3> position;
   std::vector<geometrycentral::Vector3> normal;
   const std::vector<double>& area; // the cloud's point areas

@@ -149,6 +149,7 @@ export class WholeShape {
     this.invalidate();
     this.progressLoops = new LoopSet(surface, 0.6 * candidateRadius(surface));
     this.lastRedraw = performance.now(); // the first loops wait too: a short run is drawn less often
+    this.lastNewsShown = -Infinity;
     this.ctx.layerColors.set('sk-progress', COLORS.candidate);
     this.cancelRequested = false;
     this.auto = options.n === 'auto';
@@ -222,11 +223,10 @@ export class WholeShape {
     }
     this.lastNews = news;
     this.progress = news.total > 0 ? news.done / news.total : 0;
-    if (news.finished) this.showNews();
-    else if (this.newsTimer === null) {
-      const every = PROGRESS_TEXT_MS[this.ctx.viewer.software ? 'software' : 'gpu'];
-      this.newsTimer = window.setTimeout(() => this.showNews(), Math.max(0, this.lastNewsShown + every - performance.now()));
-    }
+    // The first news of a run and the last at once, the others at most every PROGRESS_TEXT_MS.
+    const wait = this.lastNewsShown + PROGRESS_TEXT_MS[this.ctx.viewer.software ? 'software' : 'gpu'] - performance.now();
+    if (news.finished || wait <= 0) this.showNews();
+    else if (this.newsTimer === null) this.newsTimer = window.setTimeout(() => this.showNews(), wait);
     if (!this.progressLoops) return;
     const before = this.progressLoops.count;
     news.newLoops.forEach((loop, i) => this.progressLoops!.add(loop, news.newClosed[i] === 1));

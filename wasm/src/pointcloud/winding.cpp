@@ -74,19 +74,15 @@ PointWinding::PointWinding(Cloud& cloud) : area(cloud.pointAreas()) {
 // Whether a tree's normals point outwards. Its winding number is 1 inside and 0 outside with outward
 // normals, 0 and -1 with inward ones: summed just inside and just outside sampled points (half a spacing
 // along each normal) it has the sign of the orientation. Outward normals also enclose a positive volume
-// (sum a_i n_i . (x_i - c) = 3 V, the divergence theorem), the rule used first, but on thin, sparse,
-// open scans (tree_woodske_HS and SW) that sum came out negative and turned them inside out (the winding
-// number about -1 inside every branch, so every loop failed the centroid test): it decides only where the
-// winding numbers do not (an open sheet: about +-1/2 on either side, a sum near 0). The topmost point's own normal (PCA on
-// the tip of an ear lies nearly flat) turned the whole horse_clean cloud inside out.
+// (sum a_i n_i . (x_i - c) = 3 V, the divergence theorem), the rule used first, but on the thin, sparse,
+// open scan tree_woodske_HS that sum came out negative and turned it inside out (the winding number about
+// -1 inside every branch, so every loop failed the centroid test): it decides only where the winding
+// numbers do not (an open sheet: about +-1/2 on either side, a sum near 0). The topmost point's own
+// normal (PCA on the tip of an ear lies nearly flat) turned the whole horse_clean cloud inside out.
 bool PointWinding::outward(const std::vector<size_t>& tree, double spacing) const {
   auto winding = [&](const Vector3& q) {
     double sum = 0;
-    for (size_t i : tree) {
-      const Vector3 d = position[i] - q;
-      const double r = norm(d);
-      if (r > 0) sum += area[i] * dot(normal[i], d) / (r * r * r);
-    }
+    for (size_t i : tree) sum += term(i, q);
     return sum / (4 * M_PI);
   };
   const size_t every = std::max<size_t>(1, tree.size() / kOrientationSamples);
@@ -107,13 +103,15 @@ bool PointWinding::outward(const std::vector<size_t>& tree, double spacing) cons
   return volume >= 0;
 }
 
+double PointWinding::term(size_t i, const Vector3& q) const {
+  const Vector3 d = position[i] - q;
+  const double r = norm(d);
+  return r > 0 ? area[i] * dot(normal[i], d) / (r * r * r) : 0;
+}
+
 double PointWinding::operator()(const Vector3& q) const {
   double sum = 0;
-  for (size_t i = 0; i < position.size(); i++) {
-    const Vector3 d = position[i] - q;
-    const double r = norm(d);
-    if (r > 0) sum += area[i] * dot(normal[i], d) / (r * r * r);
-  }
+  for (size_t i = 0; i < position.size(); i++) sum += term(i, q);
   return sum / (4 * M_PI);
 }
 

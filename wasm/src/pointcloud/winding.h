@@ -27,6 +27,8 @@ public:
 
 private:
   bool outward(const std::vector<size_t>& tree, double spacing) const;
+  // Point i's share of the winding number at q, before the division by 4 pi.
+  double term(size_t i, const geometrycentral::Vector3& q) const;
 
   std::vector<geometrycentral::Vector3> position;
   std::vector<geometrycentral::Vector3> normal;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <vector>
+#include <array>
+#include <map>
 #include <queue>
 
 using namespace geometrycentral;
@@ -17,6 +19,15 @@ namespace {
 // is closed and well sampled; less on thin, sparse branches: 0.17 a point on tree_woodske_SW).
 constexpr size_t kOrientationSamples = 256;
 constexpr double kClearWinding = 3;
+
+// Patches that may be turned on their own: the points of one tree in one cube of a grid this many spacings
+// wide, each sampled at up to kPatchSamples points. A patch is turned when that lowers the squared misfit
+// by more than kTurnGain times what an inverted patch in an otherwise right cloud lowers it (below). A
+// patch is one dipole at its centre for a sample farther than kFarReaches times its radius.
+constexpr double kPatchSpacings = 10;
+constexpr size_t kPatchSamples = 8;
+constexpr double kTurnGain = 0.5;
+constexpr double kFarReaches = 4;
 
 } // namespace
 
@@ -36,9 +47,11 @@ PointWinding::PointWinding(Cloud& cloud) : area(cloud.pointAreas()) {
 
   // Prim's tree from the topmost unvisited point; each point takes the orientation of the tree
   // neighbour it is reached from. Ties in the weight go to the lower index, so the orientation is the
-  // same on every run. Each tree's sign is then chosen by its enclosed volume (below).
+  // same on every run. Each tree's sign is then chosen by its winding number (outward), and patches of it
+  // turned where the whole cloud's winding number says so (turnPatches).
   std::vector<char> oriented(n, 0);
-  std::vector<size_t> tree;
+  std::vector<size_t> tree, treeOf(n, 0);
+  size_t trees = 0;
   using Entry = std::pair<double, std::pair<size_t, size_t>>; // weight, (point, from)
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
   auto reach = [&](size_t p) {
@@ -68,7 +81,91 @@ PointWinding::PointWinding(Cloud& cloud) : area(cloud.pointAreas()) {
     }
     if (!outward(tree, spacing))
       for (size_t p : tree) normal[p] = -normal[p];
+    for (size_t p : tree) treeOf[p] = trees;
+    trees++;
   }
+  turnPatches(treeOf, spacing);
+}
+
+// A tree's propagation can turn at a junction of thin parts: tree_woodske_SW's trunk came out inside out
+// (winding about -1 on its axis) under a crown oriented right, whose many points decided the tree's sign.
+// With one orientation the winding number is 1 just inside and 0 just outside, so w(x - d n) + w(x + d n)
+// is about 1 at every point x: sweeping over the patches in order, each is turned where that brings those
+// sums at the samples clearly closer to 1 (w is linear in each patch's sign), until a sweep turns none.
+void PointWinding::turnPatches(const std::vector<size_t>& treeOf, double spacing) {
+  const size_t n = position.size();
+  if (n == 0) return;
+  Vector3 low = position[0];
+  for (const Vector3& p : position) low = componentwiseMin(low, p);
+  const double cell = kPatchSpacings * spacing;
+  std::map<std::array<long, 4>, size_t> patchOf;
+  std::vector<size_t> patch(n);
+  std::vector<std::vector<size_t>> members;
+  for (size_t p = 0; p < n; p++) {
+    const Vector3 c = (position[p] - low) / cell;
+    const std::array<long, 4> key{long(treeOf[p]), long(std::floor(c.x)), long(std::floor(c.y)), long(std::floor(c.z))};
+    auto [it, added] = patchOf.emplace(key, members.size());
+    if (added) members.emplace_back();
+    patch[p] = it->second;
+    members[it->second].push_back(p);
+  }
+  const size_t patches = members.size();
+  if (patches < 2) return;
+  std::vector<size_t> samples;
+  for (const std::vector<size_t>& m : members) {
+    const size_t every = std::max<size_t>(1, m.size() / kPatchSamples);
+    for (size_t k = 0; k < m.size(); k += every) samples.push_back(m[k]);
+  }
+  // column[k][s]: patch k's share of w(x - d n) + w(x + d n) at sample s.
+  std::vector<std::vector<double>> column(patches, std::vector<double>(samples.size(), 0));
+  // A patch far from a sample counts as one dipole at its centre (Barill et al.'s far field, first order).
+  std::vector<Vector3> centre(patches, Vector3{0, 0, 0}), dipole(patches, Vector3{0, 0, 0});
+  std::vector<double> near(patches, spacing);
+  for (size_t k = 0; k < patches; k++) {
+    for (size_t p : members[k]) {
+      centre[k] += position[p] / double(members[k].size());
+      dipole[k] += area[p] * normal[p];
+    }
+    for (size_t p : members[k]) near[k] = std::max(near[k], kFarReaches * norm(position[p] - centre[k]));
+  }
+  auto share = [&](size_t k, const Vector3& q) {
+    const Vector3 d = centre[k] - q;
+    const double r = norm(d);
+    if (r > near[k]) return dot(dipole[k], d) / (r * r * r);
+    double sum = 0;
+    for (size_t i : members[k]) sum += term(i, q);
+    return sum;
+  };
+  for (size_t s = 0; s < samples.size(); s++) {
+    const size_t x = samples[s];
+    const Vector3 in = position[x] - 0.5 * spacing * normal[x], out = position[x] + 0.5 * spacing * normal[x];
+    for (size_t k = 0; k < patches; k++) column[k][s] = (share(k, in) + share(k, out)) / (4 * M_PI);
+  }
+  std::vector<double> residual(samples.size(), -1);
+  for (const std::vector<double>& c : column)
+    for (size_t s = 0; s < samples.size(); s++) residual[s] += c[s];
+  std::vector<char> turned(patches, 0);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (size_t k = 0; k < patches; k++) {
+      double rc = 0, cc = 0;
+      for (size_t s = 0; s < samples.size(); s++) {
+        rc += residual[s] * column[k][s];
+        cc += column[k][s] * column[k][s];
+      }
+      // Turning patch k changes the residual by -2 c_k, the misfit by |r - 2 c|^2 - |r|^2 = 4 (cc - rc):
+      // an inverted patch in a right cloud has r = 2 c plus the sums' noise, a gain of 4 cc.
+      if (!(4 * (rc - cc) > kTurnGain * 4 * cc)) continue;
+      turned[k] ^= 1;
+      changed = true;
+      for (size_t s = 0; s < samples.size(); s++) {
+        residual[s] -= 2 * column[k][s];
+        column[k][s] = -column[k][s];
+      }
+    }
+  }
+  for (size_t p = 0; p < n; p++)
+    if (turned[patch[p]]) normal[p] = -normal[p];
 }
 
 // Whether a tree's normals point outwards. Its winding number is 1 inside and 0 outside with outward

@@ -15,7 +15,9 @@ namespace cscd {
 // propagation along a minimum spanning tree of the neighbour graph weighted by 1 - |n_i . n_j| (Hoppe et
 // al. 1992), each tree's sign chosen so that its winding number is positive just inside its points, or
 // where that does not decide (an open sheet) so that its normals enclose a positive volume (sum a_i n_i .
-// x_i = 3 V, divergence theorem). Areas: the cloud's point areas.
+// x_i = 3 V, divergence theorem); then patches of a tree are turned where the whole cloud's winding
+// number is clearly nearer 1 inside and 0 outside that way (a propagation that turned at a junction).
+// Areas: the cloud's point areas.
 class PointWinding {
 public:
   explicit PointWinding(Cloud& cloud);
@@ -27,6 +29,7 @@ public:
 
 private:
   bool outward(const std::vector<size_t>& tree, double spacing) const;
+  void turnPatches(const std::vector<size_t>& treeOf, double spacing);
   // Point i's share of the winding number at q, before the division by 4 pi.
   double term(size_t i, const geometrycentral::Vector3& q) const;
 

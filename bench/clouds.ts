@@ -1,6 +1,6 @@
 // `npm run bench:clouds`: CSCD-PC on the shared point clouds, against MSLS run on the same cloud's
-// neighbourhood graph (pygel3d, the baseline people can run on points) and against CSCD-M on the mesh the
-// cloud was sampled from.
+// neighbourhood graph (pygel3d, the baseline people can run on points), against pc-skeletor's Laplacian-based
+// contraction on the cloud (a tree by construction) and against CSCD-M on the mesh the cloud was sampled from.
 //
 //   npm run bench:clouds [-- [--clouds a,b] [--timeout S] [--cpu N] [--no-build]]
 //
@@ -24,13 +24,13 @@ import { parseMesh, parseShape } from '../lib/io/index.ts';
 import { boundingBoxDiagonal } from '../lib/io/repair.ts';
 import { parseSkeleton } from '../lib/io/skeleton.ts';
 import { geometricMean, leafIndices, meanDistanceToSkeleton, median } from './metrics.ts';
-import { repoRoot, runPinned, shell, venvPython, type Run } from './process.ts';
+import { repoRoot, runPinned, shell, skeletorPython, venvPython, type Run } from './process.ts';
 import { claimResultName } from './result-name.ts';
 
 const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
 const cloudFolder = path.join(sharedData, 'pointclouds');
 const resultsDir = path.join(repoRoot, 'bench', 'results');
-const METHODS = ['cscd-pc', 'msls-graph', 'cscd-m'] as const;
+const METHODS = ['cscd-pc', 'msls-graph', 'skeletor', 'cscd-m'] as const;
 type Method = (typeof METHODS)[number];
 
 /** The reference skeleton points shipped beside a cloud (WoodSKE's trees), or null. */
@@ -84,13 +84,14 @@ function score(core: Core, row: Row, mesh: MeshArrays | null, cloud: CloudArrays
 
 function markdown(rows: Row[], machine: string, argv: string[]): string {
   const lines = [
-    '# Point-cloud bench: CSCD-PC, MSLS on the neighbourhood graph, CSCD-M on the source mesh',
+    '# Point-cloud bench: CSCD-PC, MSLS on the neighbourhood graph, pc-skeletor, CSCD-M on the source mesh',
     '',
     machine,
     '',
     `Options: \`npm run bench:clouds -- ${argv.join(' ')}\`. Every method in its own process pinned to one core, default options `
       + '(CSCD-PC and CSCD-M: `n = auto`; MSLS: pygel3d\'s `MSLS_skeleton_and_map` on the edges of the cloud\'s neighbourhood graph, '
-      + 'the local-triangulation edges CSCD-PC runs on). Seconds: each runner\'s own wall time of the skeletonisation (reading, checking and '
+      + 'the local-triangulation edges CSCD-PC runs on; skeletor: pc-skeletor 1.0.0\'s LBC, Laplacian-based contraction of the cloud, its '
+      + '`skeleton_graph`, a minimum spanning tree over points sampled from the contracted cloud). Seconds: each runner\'s own wall time of the skeletonisation (reading, checking and '
       + 'writing excluded; MSLS: building its graph excluded). Error ×1e3, the paper\'s reconstruction error with radii derived by one rule '
       + 'for every method: against the source mesh (its vertices) and against the cloud (its points). Reference: for the trees, the mean '
       + 'distance from the reference skeleton points shipped beside them (WoodSKE) to the skeleton, % of the cloud\'s bounding-box diagonal.',
@@ -118,7 +119,9 @@ function markdown(rows: Row[], machine: string, argv: string[]): string {
     `| error vs mesh, CSCD-PC / CSCD-M: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'cscd-m', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'cscd-m', 'againstMesh')))}) |`,
     `| error vs mesh, CSCD-PC / MSLS on the graph: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'msls-graph', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'msls-graph', 'againstMesh')))}) |`,
     `| seconds, CSCD-PC / CSCD-M: median | ${num(median(ratios('cscd-pc', 'cscd-m', 'seconds')))} |`,
-    `| seconds, CSCD-PC / MSLS on the graph: median | ${num(median(ratios('cscd-pc', 'msls-graph', 'seconds')))} |`);
+    `| error vs mesh, CSCD-PC / pc-skeletor: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'skeletor', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'skeletor', 'againstMesh')))}) |`,
+    `| seconds, CSCD-PC / MSLS on the graph: median | ${num(median(ratios('cscd-pc', 'msls-graph', 'seconds')))} |`,
+    `| seconds, CSCD-PC / pc-skeletor: median | ${num(median(ratios('cscd-pc', 'skeletor', 'seconds')))} |`);
   return `${lines.join('\n')}\n`;
 }
 
@@ -138,8 +141,8 @@ async function main(): Promise<void> {
     const built = spawnSync('bash', ['scripts/build-wasm.sh'], { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
     if (built.status !== 0) throw new Error('scripts/build-wasm.sh failed');
   }
-  const bench = spawnSync('bash', ['bench/setup.sh', 'msls'], { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
-  if (bench.status !== 0) throw new Error('bench/setup.sh msls failed');
+  const bench = spawnSync('bash', ['bench/setup.sh', 'msls', 'skeletor'], { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
+  if (bench.status !== 0) throw new Error('bench/setup.sh msls skeletor failed');
 
   mkdirSync(resultsDir, { recursive: true });
   const name = claimResultName(resultsDir, `${new Date().toISOString().slice(0, 10)}-clouds`, ['md']);
@@ -177,6 +180,8 @@ async function main(): Promise<void> {
     runs.push(['msls-graph', existsSync(graph)
       ? runPinned([venvPython, 'bench/runners/gel.py', 'msls', '--graph', graph, mslsFile], mslsFile, path.join(runDir, `${label}.msls-graph.log`), timeout, cpu)
       : { status: 'failed', seconds: null, reason: 'no neighbourhood graph (CSCD-PC failed)', file: mslsFile }]);
+    const skeletorFile = path.join(runDir, `${label}.skeletor.obj`);
+    runs.push(['skeletor', runPinned([skeletorPython, 'bench/runners/skeletor.py', cloudPath, skeletorFile], skeletorFile, path.join(runDir, `${label}.skeletor.log`), timeout, cpu)]);
     if (meshPath) {
       const meshLabel = path.basename(meshPath, '.ply');
       const meshFile = path.join(runDir, `${meshLabel}.cscd-m.json`);

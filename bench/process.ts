@@ -7,6 +7,8 @@ import { fileURLToPath } from 'node:url';
 
 export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 export const venvPython = path.join(repoRoot, '.deps', 'bench-venv', 'bin', 'python');
+/** pc-skeletor's own environment (bench/setup.sh skeletor): it needs numpy < 1.24. */
+export const skeletorPython = path.join(repoRoot, '.deps', 'skeletor-venv', 'bin', 'python');
 
 /** One thread for every library that would start more (OpenMP in Eigen, BLAS under numpy). */
 const ONE_THREAD_ENV = {

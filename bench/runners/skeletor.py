@@ -1,0 +1,59 @@
+"""Baseline `skeletor` of the cloud bench: pc-skeletor's Laplacian-based contraction (LBC; Cao et al.
+2010, "Point cloud skeletons via Laplacian-based contraction"), pc-skeletor 1.0.0 (MIT), default options.
+
+    python skeletor.py <cloud.ply> <skeleton.obj>
+
+The skeleton is pc-skeletor's `skeleton_graph`: a minimum spanning tree over farthest points sampled from
+the contracted cloud (so it has no cycles by construction). Writes it as OBJ (`v x y z` per node, `l i j`
+per edge, 1-based) and prints, as the last line of stdout, {"seconds": S}: the wall time of contraction
+and graph extraction (reading and writing excluded).
+
+pc-skeletor's package imports its learned method (Point2Skeleton: torch, dgl) on import; only LBC is run
+here, so its module is loaded without the package's __init__ (bench/setup.sh installs LBC's needs alone).
+"""
+import json
+import os
+import sys
+import time
+import types
+
+
+def load_lbc():
+    """pc_skeletor.laplacian.LBC, its package set up as an empty namespace so that its __init__ never runs."""
+    site = next(p for p in sys.path if p.endswith("site-packages") and os.path.isdir(os.path.join(p, "pc_skeletor")))
+    package = types.ModuleType("pc_skeletor")
+    package.__path__ = [os.path.join(site, "pc_skeletor")]
+    sys.modules["pc_skeletor"] = package
+    from pc_skeletor.laplacian import LBC
+
+    return LBC
+
+
+def main() -> int:
+    if len(sys.argv) != 3:
+        print("usage: skeletor.py <cloud.ply> <skeleton.obj>", file=sys.stderr)
+        return 2
+    cloud_path, out_path = sys.argv[1:]
+    import open3d as o3d
+
+    LBC = load_lbc()
+    cloud = o3d.io.read_point_cloud(cloud_path)
+    started = time.perf_counter()
+    lbc = LBC(point_cloud=cloud)
+    lbc.extract_skeleton()
+    lbc.extract_topology()
+    seconds = time.perf_counter() - started
+    graph = lbc.skeleton_graph
+    index = {node: i for i, node in enumerate(graph.nodes)}
+    with open(out_path, "w") as f:
+        for node in graph.nodes:
+            x, y, z = graph.nodes[node]["pos"]
+            f.write(f"v {x} {y} {z}\n")
+        for a, b in graph.edges:
+            f.write(f"l {index[a] + 1} {index[b] + 1}\n")
+    print(json.dumps({"seconds": seconds}))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -91,7 +91,7 @@ function markdown(rows: Row[], machine: string, argv: string[]): string {
     `Options: \`npm run bench:clouds -- ${argv.join(' ')}\`. Every method in its own process pinned to one core, default options `
       + '(CSCD-PC and CSCD-M: `n = auto`; MSLS: pygel3d\'s `MSLS_skeleton_and_map` on the edges of the cloud\'s neighbourhood graph, '
       + 'the local-triangulation edges CSCD-PC runs on; skeletor: pc-skeletor 1.0.0\'s LBC, Laplacian-based contraction of the cloud, its '
-      + '`skeleton_graph`, a minimum spanning tree over points sampled from the contracted cloud). Seconds: each runner\'s own wall time of the skeletonisation (reading, checking and '
+      + '`skeleton_graph`, a minimum spanning tree over points sampled from the contracted cloud; the cloud scaled to a unit diagonal for it, the skeleton scaled back). Seconds: each runner\'s own wall time of the skeletonisation (reading, checking and '
       + 'writing excluded; MSLS: building its graph excluded). Error ×1e3, the paper\'s reconstruction error with radii derived by one rule '
       + 'for every method: against the source mesh (its vertices) and against the cloud (its points). Reference: for the trees, the mean '
       + 'distance from the reference skeleton points shipped beside them (WoodSKE) to the skeleton, % of the cloud\'s bounding-box diagonal.',

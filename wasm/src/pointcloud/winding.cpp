@@ -90,8 +90,8 @@ PointWinding::PointWinding(Cloud& cloud) : area(cloud.pointAreas()) {
 // A tree's propagation can turn at a junction of thin parts: tree_woodske_SW's trunk came out inside out
 // (winding about -1 on its axis) under a crown oriented right, whose many points decided the tree's sign.
 // With one orientation the winding number is 1 just inside and 0 just outside, so w(x - d n) + w(x + d n)
-// is about 1 at every point x: sweeping over the patches in order, each is turned where that brings those
-// sums at the samples clearly closer to 1 (w is linear in each patch's sign), until a sweep turns none.
+// is about 1 at every point x: a patch is turned where that brings those sums at the samples clearly closer
+// to 1 (w is linear in each patch's sign) and its own samples' sums are below 0, until a sweep turns none.
 void PointWinding::turnPatches(const std::vector<size_t>& treeOf, double spacing) {
   const size_t n = position.size();
   if (n == 0) return;
@@ -111,10 +111,11 @@ void PointWinding::turnPatches(const std::vector<size_t>& treeOf, double spacing
   }
   const size_t patches = members.size();
   if (patches < 2) return;
-  std::vector<size_t> samples;
-  for (const std::vector<size_t>& m : members) {
-    const size_t every = std::max<size_t>(1, m.size() / kPatchSamples);
-    for (size_t k = 0; k < m.size(); k += every) samples.push_back(m[k]);
+  std::vector<size_t> samples, firstSample(patches + 1, 0);
+  for (size_t k = 0; k < patches; k++) {
+    const size_t every = std::max<size_t>(1, members[k].size() / kPatchSamples);
+    for (size_t i = 0; i < members[k].size(); i += every) samples.push_back(members[k][i]);
+    firstSample[k + 1] = samples.size();
   }
   // column[k][s]: patch k's share of w(x - d n) + w(x + d n) at sample s.
   std::vector<std::vector<double>> column(patches, std::vector<double>(samples.size(), 0));
@@ -145,17 +146,33 @@ void PointWinding::turnPatches(const std::vector<size_t>& treeOf, double spacing
   for (const std::vector<double>& c : column)
     for (size_t s = 0; s < samples.size(); s++) residual[s] += c[s];
   std::vector<char> turned(patches, 0);
+  // Turning patch k changes the residual by -2 c_k, the misfit by |r - 2 c|^2 - |r|^2 = 4 (cc - rc): an
+  // inverted patch in a right cloud has r = 2 c plus the sums' noise, a gain of 4 cc.
+  auto gain = [&](size_t k) {
+    double rc = 0, cc = 0;
+    for (size_t s = 0; s < samples.size(); s++) {
+      rc += residual[s] * column[k][s];
+      cc += column[k][s] * column[k][s];
+    }
+    return std::pair{4 * (rc - cc), 4 * cc};
+  };
   for (bool changed = true; changed;) {
     changed = false;
-    for (size_t k = 0; k < patches; k++) {
-      double rc = 0, cc = 0;
-      for (size_t s = 0; s < samples.size(); s++) {
-        rc += residual[s] * column[k][s];
-        cc += column[k][s] * column[k][s];
-      }
-      // Turning patch k changes the residual by -2 c_k, the misfit by |r - 2 c|^2 - |r|^2 = 4 (cc - rc):
-      // an inverted patch in a right cloud has r = 2 c plus the sums' noise, a gain of 4 cc.
-      if (!(4 * (rc - cc) > kTurnGain * 4 * cc)) continue;
+    // Each sweep takes the patches by their gain at its start, the largest first: turning the most
+    // clearly inverted ones makes their neighbours' sums clearer.
+    std::vector<std::pair<double, size_t>> order;
+    for (size_t k = 0; k < patches; k++) order.push_back({-gain(k).first, k});
+    std::sort(order.begin(), order.end());
+    for (const auto& [ignored, k] : order) {
+      const auto [turnGain, inverted] = gain(k);
+      if (!(turnGain > kTurnGain * inverted)) continue;
+      // Only a patch that looks inside out itself: on noisy clouds the sums near the points are smeared,
+      // and turns that fit 1 better overall inverted more points than they righted (the noisy bob, hand
+      // and armadillo, measured against their meshes' normals: 38, 59, 256 of 1539 samples inverted
+      // without patches, 133, 222, 446 with any turn allowed, 38, 59, 255 so).
+      double own = 0;
+      for (size_t s = firstSample[k]; s < firstSample[k + 1]; s++) own += residual[s] + 1;
+      if (!(own < 0)) continue;
       turned[k] ^= 1;
       changed = true;
       for (size_t s = 0; s < samples.size(); s++) {

@@ -11,9 +11,10 @@ export NODE_PATH=/usr/share/nodejs
 BUILD=build/wasm
 DEPS="$PWD/.deps/potpourri3d-1.4.0/deps"
 
-if [ ! -f "$BUILD/CMakeCache.txt" ]; then
-  emcmake cmake -S wasm -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCSCD_DEPS_DIR="$DEPS" >/dev/null
-fi
+# Configured on every build, not only the first: the cache key below is read from the flags CMake
+# writes, which must be those of wasm/CMakeLists.txt as it is now (a changed flag, such as the exception
+# model, would otherwise pick the archive built with the old one and fail to link).
+emcmake cmake -S wasm -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCSCD_DEPS_DIR="$DEPS" >/dev/null
 
 # geometry-central's archive is kept outside the clone, one per key: the sdist's sha256, the compiler and
 # the flags and include paths CMake gives the library (the clone's own path taken out), so a fresh clone

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 #include <array>
 #include <map>
 #include <queue>
+#include <vector>
 
 using namespace geometrycentral;
 using namespace geometrycentral::pointcloud;
@@ -20,11 +20,18 @@ namespace {
 constexpr size_t kOrientationSamples = 256;
 constexpr double kClearWinding = 3;
 
+// Where the winding number is read across a point, in spacings along its normal on either side.
+constexpr double kAcross = 0.5;
+
 // Patches that may be turned on their own: the points of one tree in one cube of a grid this many spacings
-// wide, each sampled at up to kPatchSamples points. A patch is turned when that lowers the squared misfit
-// by more than kTurnGain times what an inverted patch in an otherwise right cloud lowers it (below). A
-// patch is one dipole at its centre for a sample farther than kFarReaches times its radius.
+// wide (wider, by kPatchGrowth at a time, until there are at most kMaxPatches: the patch-by-sample table
+// holds at most 1024 x 8192 numbers, 64 MB), each sampled at up to kPatchSamples points. A patch is turned
+// when that lowers the squared misfit by more than kTurnGain times what an inverted patch in an otherwise
+// right cloud lowers it (below). A patch is one dipole at its centre for a sample farther than kFarReaches
+// times its radius.
 constexpr double kPatchSpacings = 10;
+constexpr size_t kMaxPatches = 1024;
+constexpr double kPatchGrowth = 1.25;
 constexpr size_t kPatchSamples = 8;
 constexpr double kTurnGain = 0.5;
 constexpr double kFarReaches = 4;
@@ -97,17 +104,19 @@ void PointWinding::turnPatches(const std::vector<size_t>& treeOf, double spacing
   if (n == 0) return;
   Vector3 low = position[0];
   for (const Vector3& p : position) low = componentwiseMin(low, p);
-  const double cell = kPatchSpacings * spacing;
-  std::map<std::array<long, 4>, size_t> patchOf;
   std::vector<size_t> patch(n);
   std::vector<std::vector<size_t>> members;
-  for (size_t p = 0; p < n; p++) {
-    const Vector3 c = (position[p] - low) / cell;
-    const std::array<long, 4> key{long(treeOf[p]), long(std::floor(c.x)), long(std::floor(c.y)), long(std::floor(c.z))};
-    auto [it, added] = patchOf.emplace(key, members.size());
-    if (added) members.emplace_back();
-    patch[p] = it->second;
-    members[it->second].push_back(p);
+  for (double cell = kPatchSpacings * spacing; members.empty() || members.size() > kMaxPatches; cell *= kPatchGrowth) {
+    std::map<std::array<long, 4>, size_t> patchOf;
+    members.clear();
+    for (size_t p = 0; p < n; p++) {
+      const Vector3 c = (position[p] - low) / cell;
+      const std::array<long, 4> key{long(treeOf[p]), long(std::floor(c.x)), long(std::floor(c.y)), long(std::floor(c.z))};
+      auto [it, added] = patchOf.emplace(key, members.size());
+      if (added) members.emplace_back();
+      patch[p] = it->second;
+      members[it->second].push_back(p);
+    }
   }
   const size_t patches = members.size();
   if (patches < 2) return;
@@ -138,8 +147,7 @@ void PointWinding::turnPatches(const std::vector<size_t>& treeOf, double spacing
     return sum;
   };
   for (size_t s = 0; s < samples.size(); s++) {
-    const size_t x = samples[s];
-    const Vector3 in = position[x] - 0.5 * spacing * normal[x], out = position[x] + 0.5 * spacing * normal[x];
+    const auto [in, out] = across(samples[s], spacing);
     for (size_t k = 0; k < patches; k++) column[k][s] = (share(k, in) + share(k, out)) / (4 * M_PI);
   }
   std::vector<double> residual(samples.size(), -1);
@@ -200,21 +208,25 @@ bool PointWinding::outward(const std::vector<size_t>& tree, double spacing) cons
     return sum / (4 * M_PI);
   };
   const size_t every = std::max<size_t>(1, tree.size() / kOrientationSamples);
-  std::vector<double> across;
+  std::vector<double> sums;
   for (size_t k = 0; k < tree.size(); k += every) {
-    const size_t p = tree[k];
-    across.push_back(winding(position[p] - 0.5 * spacing * normal[p]) + winding(position[p] + 0.5 * spacing * normal[p]));
+    const auto [in, out] = across(tree[k], spacing);
+    sums.push_back(winding(in) + winding(out));
   }
   double mean = 0, spread = 0;
-  for (double a : across) mean += a / double(across.size());
-  for (double a : across) spread += (a - mean) * (a - mean) / double(across.size());
+  for (double a : sums) mean += a / double(sums.size());
+  for (double a : sums) spread += (a - mean) * (a - mean) / double(sums.size());
   // The winding numbers decide when their mean is clearly off 0: kClearWinding standard errors.
-  if (across.size() > 1 && std::abs(mean) > kClearWinding * std::sqrt(spread / double(across.size()))) return mean > 0;
+  if (sums.size() > 1 && std::abs(mean) > kClearWinding * std::sqrt(spread / double(sums.size()))) return mean > 0;
   Vector3 centre{0, 0, 0};
   for (size_t p : tree) centre += position[p] / double(tree.size());
   double volume = 0;
   for (size_t p : tree) volume += area[p] * dot(normal[p], position[p] - centre);
   return volume >= 0;
+}
+
+std::array<Vector3, 2> PointWinding::across(size_t p, double spacing) const {
+  return {position[p] - kAcross * spacing * normal[p], position[p] + kAcross * spacing * normal[p]};
 }
 
 double PointWinding::term(size_t i, const Vector3& q) const {

@@ -2,6 +2,7 @@
 
 #include "pointcloud/cloud.h"
 
+#include <array>
 #include <vector>
 
 namespace cscd {
@@ -30,6 +31,8 @@ public:
 private:
   bool outward(const std::vector<size_t>& tree, double spacing) const;
   void turnPatches(const std::vector<size_t>& treeOf, double spacing);
+  // The points just inside and just outside point p (with its normal outward), where the sums are read.
+  std::array<geometrycentral::Vector3, 2> across(size_t p, double spacing) const;
   // Point i's share of the winding number at q, before the division by 4 pi.
   double term(size_t i, const geometrycentral::Vector3& q) const;
 

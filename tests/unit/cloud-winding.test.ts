@@ -92,8 +92,8 @@ describe('winding numbers of a point cloud', () => {
 
   it('no longer turns the trunk of tree_woodske_SW inside out, below branches its normals reached through a junction', () => {
     // One propagation tree held trunk and crown; the crown's many points decided its sign and the trunk
-    // came out inside out (-0.97 to -1.10 on its axis) until patches could be turned on their own: 0.12 to
-    // 0.54 now, its lowest patches still inverted (those whose own sums do not say so are left as they are).
+    // came out inside out (-0.97 to -1.10 on its axis) until patches could be turned on their own: 0.13 to
+    // 0.50 now, its lowest patches still inverted (those whose own sums do not say so are left as they are).
     const shape = readCloud(path.join(sharedData, 'pointclouds', 'tree_woodske_SW.ply'));
     const tree = core.openCloud({ positions: shape.positions, normals: null });
     try {

@@ -4,7 +4,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core, type MeshArrays, type Skeleton } from '../../lib/core/node.ts';
 import { graphTopology } from '../../lib/graph/topology.ts';
 import { extremities, readMesh, torus } from './support/meshes.ts';
-import { distance3, nodePieces, point } from './support/skeletons.ts';
+import { distance3, leafNodes, nodePieces, point } from './support/skeletons.ts';
 import { sharedMesh } from '../paths.ts';
 
 let core: Core;
@@ -22,18 +22,12 @@ function skeletonOf(file: string): Skeleton {
   }
 }
 
-function leaves(skeleton: Skeleton): number[] {
-  const degree = new Array(skeleton.radii.length).fill(0);
-  for (const v of skeleton.edges) degree[v]++;
-  return degree.flatMap((d, i) => (d === 1 ? [i] : []));
-}
-
 /** The nearest leaf of the skeleton to every tip must be a different node, within `reach` of it. */
 function expectOneLeafPerTip(mesh: MeshArrays, skeleton: Skeleton, tips: number[], reach: number) {
-  const leafNodes = leaves(skeleton);
+  const leaves = leafNodes(skeleton);
   const nearest = tips.map((tip) => {
     const at = point(mesh.positions, tip);
-    const best = leafNodes.reduce((a, b) => (distance3(point(skeleton.nodes, a), at) <= distance3(point(skeleton.nodes, b), at) ? a : b));
+    const best = leaves.reduce((a, b) => (distance3(point(skeleton.nodes, a), at) <= distance3(point(skeleton.nodes, b), at) ? a : b));
     expect(distance3(point(skeleton.nodes, best), at)).toBeLessThan(reach);
     return best;
   });
@@ -74,7 +68,7 @@ describe('skeleton shape and bookkeeping', () => {
     // torus_two_holes_open: ring radius 1 around z, tube radius 0.4, three small holes (MANIFEST.md).
     const skeleton = skeletonOf('torus_two_holes_open.ply');
     expect(skeleton.stats.cycles).toBe(1);
-    expect(leaves(skeleton)).toEqual([]);
+    expect(leafNodes(skeleton)).toEqual([]);
     // The holes have one boundary loop each: no two points of one hole face each other, and points of
     // two different holes are never paired (a path between them would cut the tube), so every
     // separator is a loop around the tube.

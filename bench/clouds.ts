@@ -24,7 +24,7 @@ import { parseMesh, parseShape } from '../lib/io/index.ts';
 import { boundingBoxDiagonal } from '../lib/io/repair.ts';
 import { parseSkeleton } from '../lib/io/skeleton.ts';
 import { geometricMean, leafIndices, meanDistanceToSkeleton, median } from './metrics.ts';
-import { repoRoot, runPinned, shell, skeletorPython, venvPython, type Run } from './process.ts';
+import { COMPILED_CORE, repoRoot, runPinned, shell, skeletorPython, venvPython, type Run } from './process.ts';
 import { claimResultName } from './result-name.ts';
 
 const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
@@ -92,7 +92,8 @@ function markdown(rows: Row[], machine: string, argv: string[]): string {
       + '(CSCD-PC and CSCD-M: `n = auto`; MSLS: pygel3d\'s `MSLS_skeleton_and_map` on the edges of the cloud\'s neighbourhood graph, '
       + 'the local-triangulation edges CSCD-PC runs on; skeletor: pc-skeletor 1.0.0\'s LBC, Laplacian-based contraction of the cloud, its '
       + '`skeleton_graph`, a minimum spanning tree over points sampled from the contracted cloud; the cloud scaled to a unit diagonal for it, the skeleton scaled back). Seconds: each runner\'s own wall time of the skeletonisation (reading, checking and '
-      + 'writing excluded; MSLS: building its graph excluded). Error ×1e3, the paper\'s reconstruction error with radii derived by one rule '
+      + `writing excluded; MSLS: building its graph excluded; CSCD's WebAssembly compiled whole before the clock starts, \`${COMPILED_CORE.join(' ')}\`). Error ×1e3, `
+      + 'the paper\'s reconstruction error with radii derived by one rule '
       + 'for every method: against the source mesh (its vertices) and against the cloud (its points). Reference: for the trees, the mean '
       + 'distance from the reference skeleton points shipped beside them (WoodSKE) to the skeleton, % of the cloud\'s bounding-box diagonal.',
     '',
@@ -174,7 +175,7 @@ async function main(): Promise<void> {
     const graph = path.join(runDir, `${label}.graph.json`);
     const cscdFile = path.join(runDir, `${label}.cscd-pc.json`);
     const runs: [Method, Run][] = [
-      ['cscd-pc', runPinned([process.execPath, '--import', 'tsx', 'bench/runners/cscd-cloud.ts', cloudPath, cscdFile, '--graph', graph], cscdFile, path.join(runDir, `${label}.cscd-pc.log`), timeout, cpu)],
+      ['cscd-pc', runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd-cloud.ts', cloudPath, cscdFile, '--graph', graph], cscdFile, path.join(runDir, `${label}.cscd-pc.log`), timeout, cpu)],
     ];
     const mslsFile = path.join(runDir, `${label}.msls-graph.obj`);
     runs.push(['msls-graph', existsSync(graph)
@@ -186,7 +187,7 @@ async function main(): Promise<void> {
       const meshLabel = path.basename(meshPath, '.ply');
       const meshFile = path.join(runDir, `${meshLabel}.cscd-m.json`);
       if (!meshRuns.has(meshPath)) {
-        meshRuns.set(meshPath, runPinned([process.execPath, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, meshFile], meshFile, path.join(runDir, `${meshLabel}.cscd-m.log`), timeout, cpu));
+        meshRuns.set(meshPath, runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, meshFile], meshFile, path.join(runDir, `${meshLabel}.cscd-m.log`), timeout, cpu));
       }
       runs.push(['cscd-m', meshRuns.get(meshPath)!]);
     }

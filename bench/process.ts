@@ -10,6 +10,15 @@ export const venvPython = path.join(repoRoot, '.deps', 'bench-venv', 'bin', 'pyt
 /** pc-skeletor's own environment (bench/setup.sh skeletor): it needs numpy < 1.24. */
 export const skeletorPython = path.join(repoRoot, '.deps', 'skeletor-venv', 'bin', 'python');
 
+/**
+ * Node's flags for a run of our WebAssembly core timed against methods compiled ahead of time (MSLS's
+ * C++): the whole module compiled by V8's optimising compiler as it is loaded, before the clock starts.
+ * Without them it starts on the baseline compiler and is tiered up function by function while it runs,
+ * which on one pinned core competes with the run itself (dtorus: 1.40 s cold, 0.43 s compiled; the
+ * compiling takes about 2 s and is excluded, as loading the module and MSLS's compilation are).
+ */
+export const COMPILED_CORE = ['--no-liftoff', '--no-wasm-lazy-compilation'];
+
 /** One thread for every library that would start more (OpenMP in Eigen, BLAS under numpy). */
 const ONE_THREAD_ENV = {
   OMP_NUM_THREADS: '1',

@@ -24,7 +24,7 @@ import {
   compareErrors, leafIndices, mapByPosition, median, tipGap, VertexMapError, vertexMapRadii, type Comparison, type TipGap,
 } from './metrics.ts';
 import { errorVsSecondsSvg } from './plot.ts';
-import { repoRoot, runPinned, shell, venvPython, type Run } from './process.ts';
+import { COMPILED_CORE, repoRoot, runPinned, shell, venvPython, type Run } from './process.ts';
 import { claimResultName } from './result-name.ts';
 
 const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
@@ -49,7 +49,7 @@ const METHODS = ['cscd', 'ls', 'msls', 'mcf'] as const;
 type Method = (typeof METHODS)[number];
 
 const RUNNERS: Record<Method, { ext: string; command: (mesh: string, out: string) => string[] }> = {
-  cscd: { ext: 'json', command: (mesh, out) => [process.execPath, '--import', 'tsx', 'bench/runners/cscd.ts', mesh, out] },
+  cscd: { ext: 'json', command: (mesh, out) => [process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', mesh, out] },
   ls: { ext: 'obj', command: (mesh, out) => [venvPython, 'bench/runners/gel.py', 'ls', mesh, out] },
   msls: { ext: 'obj', command: (mesh, out) => [venvPython, 'bench/runners/gel.py', 'msls', mesh, out] },
   mcf: { ext: 'obj', command: (mesh, out) => [path.join(repoRoot, '.deps', 'bench', 'mcf'), mesh, out] },
@@ -332,7 +332,8 @@ function markdown(rows: Row[], config: Config, machine: string, meshesDone: numb
     `Every method ran in its own process pinned to one core (\`taskset -c ${config.cpu}\`, \`OMP_NUM_THREADS=1\` and the like), `
       + 'the methods one after the other for each mesh in the order cscd, ls, msls, mcf, so that drift of the machine affects them alike. '
       + 'Seconds: wall time of the skeletonisation alone, as each runner measures it (cscd: `openSurface` + `skeleton`; ls/msls: '
-      + '`graph.from_mesh` + `LS_skeleton_and_map`/`MSLS_skeleton_and_map`; mcf: `extract_mean_curvature_flow_skeleton`), reading and writing files excluded. '
+      + '`graph.from_mesh` + `LS_skeleton_and_map`/`MSLS_skeleton_and_map`; mcf: `extract_mean_curvature_flow_skeleton`), reading and writing files excluded; '
+      + `cscd's WebAssembly compiled whole by V8's optimising compiler before the clock starts (\`${COMPILED_CORE.join(' ')}\`), as the others' C++ is compiled ahead of time. `
       + 'Every skeleton was read back with `parseSkeleton` and scored by the same `core.evaluate` twice, by two radius rules the same for every method '
       + '(CSCD\'s own radii are not used): **radii: null**, derived from the mesh by one tube-fitting rule; and **vertex map**, a node\'s radius '
       + 'the median distance from it to the mesh vertices the method\'s vertex map gives it (nodes that own none: their neighbours\' mean). '

@@ -7,7 +7,7 @@ import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core } from '../../lib/core/node.ts';
 import { fixture, sharedData } from '../paths.ts';
 import { readCloudFile } from './support/clouds.ts';
-import { leafNodes } from './support/skeletons.ts';
+import { leafIndices } from '../../bench/metrics.ts';
 
 const readCloud = (name: string) => readCloudFile(fixture('clouds', name));
 
@@ -88,7 +88,7 @@ describe('noisy clouds', () => {
     try {
       const skeleton = horse.skeleton({ n: 60, seed: 1 });
       expect(skeleton.stats.cycles).toBe(0);
-      expect(leafNodes(skeleton).length).toBeGreaterThanOrEqual(6);
+      expect(leafIndices(skeleton.radii.length, skeleton.edges).length).toBeGreaterThanOrEqual(6);
     } finally {
       horse.dispose();
     }

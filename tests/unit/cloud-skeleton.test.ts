@@ -14,7 +14,7 @@ import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
 import { fixture, sharedMesh } from '../paths.ts';
 import { cscd } from './support/cli.ts';
 import { readMesh } from './support/meshes.ts';
-import { leafNodes } from './support/skeletons.ts';
+import { leafIndices } from '../../bench/metrics.ts';
 
 function readCloud(file: string): ParsedCloud {
   const shape = parseShape(new Uint8Array(readFileSync(file)), path.basename(file));
@@ -90,7 +90,7 @@ describe('CSCD-PC skeletons', () => {
     try {
       const skeleton = cloud.skeleton({ n: 60, seed: 1 });
       expect(skeleton.stats.cycles).toBe(0);
-      expect(leafNodes(skeleton).length).toBeGreaterThanOrEqual(5);
+      expect(leafIndices(skeleton.radii.length, skeleton.edges).length).toBeGreaterThanOrEqual(5);
     } finally {
       cloud.dispose();
     }

@@ -3,8 +3,9 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core, type MeshArrays, type Skeleton } from '../../lib/core/node.ts';
 import { graphTopology } from '../../lib/graph/topology.ts';
+import { leafIndices } from '../../bench/metrics.ts';
 import { extremities, readMesh, torus } from './support/meshes.ts';
-import { distance3, leafNodes, nodePieces, point } from './support/skeletons.ts';
+import { distance3, nodePieces, point } from './support/skeletons.ts';
 import { sharedMesh } from '../paths.ts';
 
 let core: Core;
@@ -24,7 +25,7 @@ function skeletonOf(file: string): Skeleton {
 
 /** The nearest leaf of the skeleton to every tip must be a different node, within `reach` of it. */
 function expectOneLeafPerTip(mesh: MeshArrays, skeleton: Skeleton, tips: number[], reach: number) {
-  const leaves = leafNodes(skeleton);
+  const leaves = leafIndices(skeleton.radii.length, skeleton.edges);
   const nearest = tips.map((tip) => {
     const at = point(mesh.positions, tip);
     const best = leaves.reduce((a, b) => (distance3(point(skeleton.nodes, a), at) <= distance3(point(skeleton.nodes, b), at) ? a : b));
@@ -68,7 +69,7 @@ describe('skeleton shape and bookkeeping', () => {
     // torus_two_holes_open: ring radius 1 around z, tube radius 0.4, three small holes (MANIFEST.md).
     const skeleton = skeletonOf('torus_two_holes_open.ply');
     expect(skeleton.stats.cycles).toBe(1);
-    expect(leafNodes(skeleton)).toEqual([]);
+    expect(leafIndices(skeleton.radii.length, skeleton.edges)).toEqual([]);
     // The holes have one boundary loop each: no two points of one hole face each other, and points of
     // two different holes are never paired (a path between them would cut the tube), so every
     // separator is a loop around the tube.

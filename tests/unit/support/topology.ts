@@ -17,13 +17,6 @@ export function closedConnectedMeshes(): { file: string; genus: number }[] {
     .map((c) => ({ file: c[1].replaceAll('`', '').replace('meshes/', ''), genus: Number(c[6]) }));
 }
 
-/** The skeleton's leaves: its nodes of degree 1. */
-export function leafNodes(skeleton: { radii: ArrayLike<number>; edges: ArrayLike<number> }): number[] {
-  const degree = new Array(skeleton.radii.length).fill(0);
-  for (let k = 0; k < skeleton.edges.length; k++) degree[skeleton.edges[k]]++;
-  return degree.flatMap((d, i) => (d === 1 ? [i] : []));
-}
-
 export const point = (flat: ArrayLike<number>, i: number) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]];
 export const distance3 = (a: number[], b: number[]) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 

@@ -1,5 +1,7 @@
 #include "geodesics/heat_distance.h"
 
+#include "geometrycentral/numerical/linear_algebra_utilities.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -25,16 +27,18 @@ HeatDistance::HeatDistance(IntrinsicGeometryInterface& geometry_, std::vector<in
   const double shortTime = meanEdgeLength * meanEdgeLength;
   SparseMatrix<double>& L = geometry.cotanLaplacian;
   SparseMatrix<double> heatOperator = geometry.vertexLumpedMassMatrix + shortTime * L;
-  heatSolver = std::make_unique<PositiveDefiniteSolver<double>>(heatOperator);
+  heatSolver = std::make_unique<OrderedLDLT>(heatOperator);
   // The cotan Laplacian is only semidefinite: the shift makes Eigen's Cholesky factorization work.
   SparseMatrix<double> shifted = L + 1e-6 * identityMatrix<double>(mesh.nVertices());
-  poissonSolver = std::make_unique<PositiveDefiniteSolver<double>>(shifted);
+  poissonSolver = std::make_unique<OrderedLDLT>(shifted);
 
   for (Face f : mesh.faces()) {
     FaceOperators& ops = faces.emplace_back();
     int k = 0;
     for (Halfedge he : f.adjacentHalfedges()) {
-      ops.vertex[k] = geometry.vertexIndices[he.vertex()];
+      const size_t vertex = geometry.vertexIndices[he.vertex()];
+      ops.inHeat[k] = heatSolver->position(vertex);
+      ops.inPoisson[k] = poissonSolver->position(vertex);
       ops.heatGradient[k] = geometry.halfedgeVectorsInFace[he.next()].rotate90();
       ops.halfedge[k] = geometry.halfedgeVectorsInFace[he];
       ops.cotanWeight[k] = geometry.halfedgeCotanWeights[he];
@@ -66,29 +70,31 @@ std::vector<double> HeatDistance::fromPoints(const std::vector<SurfacePoint>& so
 
 std::vector<double> HeatDistance::solve(const std::vector<SurfacePoint>& sources) {
   // Heat from the sources, spread to the corners of their faces by barycentric weight.
-  Vector<double> heatSource = Vector<double>::Zero(vertexComponent.size());
+  auto heatAt = [&](Vertex v) { return heatSolver->position(geometry.vertexIndices[v]); };
+  Eigen::VectorXd heat = Eigen::VectorXd::Zero(vertexComponent.size());
   for (const SurfacePoint& p : sources) {
     SurfacePoint inFace = p.inSomeFace();
     Halfedge he = inFace.face.halfedge();
-    heatSource[geometry.vertexIndices[he.vertex()]] += inFace.faceCoords.x;
-    heatSource[geometry.vertexIndices[he.next().vertex()]] += inFace.faceCoords.y;
-    heatSource[geometry.vertexIndices[he.next().next().vertex()]] += inFace.faceCoords.z;
+    heat[heatAt(he.vertex())] += inFace.faceCoords.x;
+    heat[heatAt(he.next().vertex())] += inFace.faceCoords.y;
+    heat[heatAt(he.next().next().vertex())] += inFace.faceCoords.z;
   }
-  Vector<double> heat = heatSolver->solve(heatSource);
+  heatSolver->solveInPlace(heat);
 
   // Divergence of the heat gradient normalised per face (its magnitude does not matter).
-  Vector<double> divergence = Vector<double>::Zero(vertexComponent.size());
+  Eigen::VectorXd distance = Eigen::VectorXd::Zero(vertexComponent.size());
   for (const FaceOperators& ops : faces) {
     Vector2 direction = Vector2::zero();
-    for (int k = 0; k < 3; k++) direction += ops.heatGradient[k] * heat(ops.vertex[k]);
+    for (int k = 0; k < 3; k++) direction += ops.heatGradient[k] * heat[ops.inHeat[k]];
     direction = direction.normalizeCutoff();
     for (int k = 0; k < 3; k++) {
       double value = ops.cotanWeight[k] * dot(ops.halfedge[k], direction);
-      divergence[ops.vertex[k]] += value;
-      divergence[ops.vertex[(k + 1) % 3]] += -value;
+      distance[ops.inPoisson[k]] += value;
+      distance[ops.inPoisson[(k + 1) % 3]] += -value;
     }
   }
-  Vector<double> distance = poissonSolver->solve(divergence);
+  poissonSolver->solveInPlace(distance);
+  auto distanceAt = [&](Vertex v) { return distance[poissonSolver->position(geometry.vertexIndices[v])]; };
 
   // Poisson fixes the distance up to a constant: the one that makes it right at the sources, by the
   // exact distance from a point of a triangle to its corners (Schindler & Chen 2012, Sec. 3.2).
@@ -110,15 +116,16 @@ std::vector<double> HeatDistance::solve(const std::vector<SurfacePoint>& sources
       Vector3 corner = Vector3::zero();
       corner[i] = 1.;
       double w = inFace.faceCoords[i];
-      offset += (distance[geometry.vertexIndices[he.vertex()]] - baryDistance(inFace.faceCoords, corner, edgeLengths)) * w;
+      offset += (distanceAt(he.vertex()) - baryDistance(inFace.faceCoords, corner, edgeLengths)) * w;
       weightSum += w;
       i++;
     }
   }
   offset /= weightSum;
   const double shift = -offset;
-  distance = distance.array() + shift;
-  return std::vector<double>(distance.data(), distance.data() + distance.size());
+  std::vector<double> byVertex(vertexComponent.size());
+  for (size_t v = 0; v < byVertex.size(); v++) byVertex[v] = distance[poissonSolver->position(v)] + shift;
+  return byVertex;
 }
 
 } // namespace cscd

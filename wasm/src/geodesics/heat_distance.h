@@ -1,6 +1,7 @@
 #pragma once
 
-#include "geometrycentral/numerical/linear_solvers.h"
+#include "geodesics/ordered_ldlt.h"
+
 #include "geometrycentral/surface/intrinsic_geometry_interface.h"
 #include "geometrycentral/surface/surface_point.h"
 
@@ -16,7 +17,8 @@ namespace cscd {
 // factorizations, the same sums in the same order, so the same numbers). The two linear systems are
 // factored once and each query costs two back-substitutions; the step between them (normalised heat
 // gradient, its divergence) runs on per-face arrays copied at construction, a third of the query's
-// time in geometry-central's halfedge-container loop. The triangulation must not change afterwards.
+// time in geometry-central's halfedge-container loop, which index the vectors in the factors' orders
+// (no permutation of whole vectors per solve). The triangulation must not change afterwards.
 class HeatDistance {
 public:
   // vertexComponent: connected component of every vertex, so that each component is solved on its own.
@@ -31,8 +33,9 @@ private:
   std::vector<double> solve(const std::vector<geometrycentral::surface::SurfacePoint>& sources);
 
   struct FaceOperators {
-    std::array<size_t, 3> vertex;                        // tail of each halfedge, from face.halfedge()
-    std::array<geometrycentral::Vector2, 3> heatGradient; // next halfedge's vector turned a quarter: times u at `vertex`
+    // Tail of each halfedge, from face.halfedge(), where it is in each factor's order.
+    std::array<size_t, 3> inHeat, inPoisson;
+    std::array<geometrycentral::Vector2, 3> heatGradient; // next halfedge's vector turned a quarter: times u at the tail
     std::array<geometrycentral::Vector2, 3> halfedge;     // the halfedge's vector in the face
     std::array<double, 3> cotanWeight;                    // the halfedge's cotan weight
   };
@@ -40,7 +43,7 @@ private:
   geometrycentral::surface::IntrinsicGeometryInterface& geometry;
   std::vector<int> vertexComponent;
   std::vector<FaceOperators> faces;
-  std::unique_ptr<geometrycentral::PositiveDefiniteSolver<double>> heatSolver, poissonSolver;
+  std::unique_ptr<OrderedLDLT> heatSolver, poissonSolver;
 };
 
 } // namespace cscd

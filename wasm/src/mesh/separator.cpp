@@ -112,7 +112,7 @@ SeparatorStatus loopThrough(Surface& surface, size_t source, const Extremity& ex
     for (const Vector3& p : result.approxLoop) radius = std::max(radius, norm(p - center));
     result.sphere = Sphere{center, radius};
   }
-  shortened = shortenLoop(surface.intrinsic(), surface.geometry(), result.traced.loop, result.closed, result.sphere);
+  shortened = shortenLoop(surface.intrinsic(), surface.patchBuilder(), result.traced.loop, result.closed, result.sphere);
   result.message = shortened.failure;
   if (shortened.failureKind != ShortenedLoop::Failure::None)
     return shortened.failureKind == ShortenedLoop::Failure::Degenerate ? SeparatorStatus::DegenerateLoop

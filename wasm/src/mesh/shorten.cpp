@@ -1,6 +1,6 @@
 #include "mesh/shorten.h"
 
-#include "cscd/union_find.h"
+#include "mesh/patch.h"
 
 #include "geometrycentral/surface/edge_length_geometry.h"
 #include "geometrycentral/surface/flip_geodesics.h"
@@ -17,131 +17,6 @@ using namespace geometrycentral::surface;
 
 namespace cscd {
 namespace {
-
-// A patch of the intrinsic triangulation as a mesh of its own, with the maps back to the triangulation.
-struct Patch {
-  std::unique_ptr<ManifoldSurfaceMesh> mesh;
-  std::unique_ptr<EdgeLengthGeometry> geometry;
-  HalfedgeData<Halfedge> toIntrinsic;  // patch halfedge -> intrinsic halfedge (interior halfedges)
-  HalfedgeData<Halfedge> fromIntrinsic; // intrinsic halfedge -> patch halfedge (selected faces only)
-  // Edge lengths are divided by their mean: FlipOut's angle and length tolerances are absolute, and a
-  // mesh at 1e30 (or 1e-30) would make it flip forever.
-  double scale = 1;
-};
-
-// geometry-central keeps its constructor from halfedge arrays for its own copies.
-struct ArrayMesh : ManifoldSurfaceMesh {
-  ArrayMesh(const std::vector<size_t>& heNext, const std::vector<size_t>& heVertex, const std::vector<size_t>& heFace,
-            const std::vector<size_t>& vHalfedge, const std::vector<size_t>& fHalfedge, size_t nBoundaryLoops)
-      : ManifoldSurfaceMesh(heNext, heVertex, heFace, vHalfedge, fHalfedge, nBoundaryLoops) {}
-};
-
-// Builds the patch of the selected faces. A vertex whose selected faces form several fans (a bow-tie
-// inside the patch) becomes one patch vertex per fan, so the patch is always a manifold.
-Patch buildPatch(IntrinsicTriangulation& intrinsic, const std::vector<char>& selected) {
-  ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
-  std::vector<Face> faces;
-  FaceData<size_t> slot(mesh, SIZE_MAX);
-  for (Face f : mesh.faces())
-    if (selected[f.getIndex()]) {
-      slot[f] = faces.size();
-      faces.push_back(f);
-    }
-
-  // Corner of halfedge h: the corner at h's tail in h's face.
-  auto corner = [&](Halfedge h) {
-    Halfedge first = h.face().halfedge();
-    size_t k = h == first ? 0 : h == first.next() ? 1 : 2;
-    return 3 * slot[h.face()] + k;
-  };
-  UnionFind fans(3 * faces.size());
-  for (Face f : faces)
-    for (Halfedge h : f.adjacentHalfedges()) {
-      Halfedge t = h.twin();
-      if (!t.isInterior() || slot[t.face()] == SIZE_MAX) continue;
-      fans.unite(uint32_t(corner(h)), uint32_t(corner(t.next())));
-      fans.unite(uint32_t(corner(h.next())), uint32_t(corner(t)));
-    }
-
-  // One patch vertex per fan, numbered in corner order.
-  const size_t nFaces = faces.size();
-  std::vector<size_t> cornerVertex(3 * nFaces), patchVertexOfFan(3 * nFaces, SIZE_MAX);
-  size_t nPatchVertices = 0;
-  for (size_t c = 0; c < 3 * nFaces; c++) {
-    size_t fan = fans.find(uint32_t(c));
-    if (patchVertexOfFan[fan] == SIZE_MAX) patchVertexOfFan[fan] = nPatchVertices++;
-    cornerVertex[c] = patchVertexOfFan[fan];
-  }
-
-  // The halfedge arrays, numbered as ManifoldSurfaceMesh(polygons, twins) numbers them (face by face,
-  // a new edge when the twin is not made yet, then the boundary loops), built directly: that
-  // constructor's hash map of twins was most of the time spent on a patch. Twins come from the
-  // triangulation, which can have several edges between the same two vertices.
-  std::vector<std::array<Halfedge, 3>> faceHalfedges(nFaces);
-  std::vector<size_t> heNext, heVertex, heFace, vHalfedge(nPatchVertices, INVALID_IND), fHalfedge(nFaces, INVALID_IND);
-  std::vector<size_t> cornerHalfedge(3 * nFaces, INVALID_IND); // patch halfedge leaving each corner
-  for (size_t i = 0; i < nFaces; i++) {
-    size_t k = 0;
-    for (Halfedge h : faces[i].adjacentHalfedges()) faceHalfedges[i][k++] = h;
-    for (k = 0; k < 3; k++) {
-      const size_t tail = cornerVertex[3 * i + k], tip = cornerVertex[3 * i + (k + 1) % 3];
-      if (tail == tip) throw std::runtime_error("patch: a self-edge");
-      Halfedge t = faceHalfedges[i][k].twin();
-      size_t twin = t.isInterior() && slot[t.face()] != SIZE_MAX ? cornerHalfedge[corner(t)] : INVALID_IND;
-      size_t he;
-      if (twin == INVALID_IND) {
-        he = heNext.size();
-        heNext.insert(heNext.end(), {INVALID_IND, INVALID_IND});
-        heVertex.insert(heVertex.end(), {tail, tip});
-        heFace.insert(heFace.end(), {INVALID_IND, INVALID_IND});
-      } else {
-        he = twin ^ 1;
-      }
-      cornerHalfedge[3 * i + k] = he;
-      heFace[he] = i;
-      vHalfedge[tail] = he;
-      if (k == 0) fHalfedge[i] = he;
-      else heNext[cornerHalfedge[3 * i + k - 1]] = he;
-    }
-    heNext[cornerHalfedge[3 * i + 2]] = cornerHalfedge[3 * i];
-  }
-  // Boundary loops, walked as the constructor walks them.
-  size_t nBoundaryLoops = 0;
-  for (size_t first = 0; first < heNext.size(); first++) {
-    if (heFace[first] != INVALID_IND) continue;
-    const size_t loop = nFaces + nBoundaryLoops++;
-    fHalfedge.push_back(first);
-    size_t current = first, steps = 0;
-    do {
-      heFace[current] = loop;
-      vHalfedge[heVertex[current ^ 1]] = current ^ 1;
-      size_t previous = current;
-      current = heNext[current ^ 1] ^ 1;
-      while (heFace[current] != INVALID_IND && current != first) current = heNext[current] ^ 1;
-      heNext[current] = previous;
-      if (++steps > heNext.size()) throw std::runtime_error("patch: a boundary that does not close");
-    } while (current != first);
-  }
-
-  Patch patch;
-  patch.mesh = std::make_unique<ArrayMesh>(heNext, heVertex, heFace, vHalfedge, fHalfedge, nBoundaryLoops);
-  patch.toIntrinsic = HalfedgeData<Halfedge>(*patch.mesh);
-  patch.fromIntrinsic = HalfedgeData<Halfedge>(mesh);
-  EdgeData<double> lengths(*patch.mesh, 0.);
-  intrinsic.requireEdgeLengths();
-  for (size_t c = 0; c < 3 * nFaces; c++) {
-    Halfedge ph = patch.mesh->halfedge(cornerHalfedge[c]), ih = faceHalfedges[c / 3][c % 3];
-    patch.toIntrinsic[ph] = ih;
-    patch.fromIntrinsic[ih] = ph;
-    lengths[ph.edge()] = intrinsic.edgeLengths[ih.edge()];
-  }
-  double sum = 0;
-  for (Edge e : patch.mesh->edges()) sum += lengths[e];
-  if (sum > 0) patch.scale = sum / patch.mesh->nEdges();
-  for (Edge e : patch.mesh->edges()) lengths[e] /= patch.scale;
-  patch.geometry = std::make_unique<EdgeLengthGeometry>(*patch.mesh, lengths);
-  return patch;
-}
 
 // A point of the patch as a point of the intrinsic triangulation: a vertex as the matching vertex (a
 // face point at a corner would be traced across the face, which lands off the corner on the boundary),
@@ -227,36 +102,20 @@ Halfedge intrinsicHalfedge(ManifoldSurfaceMesh& mesh, size_t a, size_t b) {
   return Halfedge();
 }
 
-ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, VertexPositionGeometry& inputGeometry,
+ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, PatchBuilder& patches,
                           const std::vector<size_t>& loopVertices, bool closed, const std::optional<Sphere>& sphere) {
   ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
   ShortenedLoop result;
   const size_t n = loopVertices.size();
 
-  std::vector<char> selected(mesh.nFaces(), sphere ? 0 : 1);
-  if (sphere) {
-    const double r2 = sphere->radius * sphere->radius * (1 + 1e-9);
-    // Each vertex tested once (not once per face around it): this pass runs over the whole mesh.
-    std::vector<char> inside(mesh.nVertices());
-    for (size_t v = 0; v < inside.size(); v++) inside[v] = norm2(inputGeometry.vertexPositions[v] - sphere->center) <= r2;
-    for (Face f : mesh.faces()) {
-      bool all = true;
-      for (Vertex v : f.adjacentVertices()) all = all && inside[v.getIndex()];
-      selected[f.getIndex()] = all;
-    }
-    // The loop's own one-ring stays in, so that the loop is a path of the patch through single fans.
-    for (size_t v : loopVertices)
-      for (Face f : mesh.vertex(v).adjacentFaces()) selected[f.getIndex()] = 1;
-  }
-
   std::unique_ptr<Patch> patch;
   std::vector<Halfedge> loop;
   try {
-    patch = std::make_unique<Patch>(buildPatch(intrinsic, selected));
+    patch = std::make_unique<Patch>(patches.build(patches.facesFor(sphere, loopVertices)));
     for (size_t i = 0; i + (closed ? 0 : 1) < n; i++) {
       Halfedge ih = intrinsicHalfedge(mesh, loopVertices[i], loopVertices[(i + 1) % n]);
       if (ih == Halfedge()) throw std::runtime_error("the loop jumps between vertices that share no edge");
-      Halfedge ph = ih.isInterior() ? patch->fromIntrinsic[ih] : patch->fromIntrinsic[ih.twin()].twin();
+      Halfedge ph = ih.isInterior() ? patch->fromIntrinsic(ih) : patch->fromIntrinsic(ih.twin()).twin();
       loop.push_back(ph);
     }
   } catch (const std::exception&) {

@@ -1,9 +1,9 @@
 #pragma once
 
 #include "cscd/sphere.h"
+#include "mesh/patch.h"
 
 #include "geometrycentral/surface/signpost_intrinsic_triangulation.h"
-#include "geometrycentral/surface/vertex_position_geometry.h"
 
 #include <array>
 #include <optional>
@@ -28,12 +28,12 @@ struct ShortenedLoop {
 // flips run on the patch of triangles whose corners lie inside it, together with the triangles
 // around the loop's own vertices: no flip can involve a vertex outside, and the patch boundary stops
 // the loop from sliding away. Without one, the patch is the whole surface. The patch is built per
-// loop, so the cost follows the size of the constraint region, and `intrinsic` is never modified.
+// loop by `patches` (built on `intrinsic`), so the cost follows the size of the constraint region, and
+// `intrinsic` is never modified.
 // An open path (closed = false, from a boundary extremity to another) is shortened with its two ends
 // held: they are minima of the distance along the boundary, where a geodesic from the source meets
 // the boundary at a right angle, as a shortest cross-section does.
-ShortenedLoop shortenLoop(geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic,
-                          geometrycentral::surface::VertexPositionGeometry& inputGeometry,
+ShortenedLoop shortenLoop(geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic, PatchBuilder& patches,
                           const std::vector<size_t>& loopVertices, bool closed, const std::optional<Sphere>& sphere);
 
 // The intrinsic halfedge from a to b (the first one, should the triangulation have parallel edges).

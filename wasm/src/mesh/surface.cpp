@@ -36,6 +36,15 @@ const CutLocusSolver& Surface::cutLocusSolver() {
   return *cutLocus;
 }
 
+PatchBuilder& Surface::patchBuilder() {
+  if (!patches) {
+    std::vector<geometrycentral::Vector3> positions(inputGeometry->vertexPositions.raw().data(),
+                                                    inputGeometry->vertexPositions.raw().data() + vertexCount());
+    patches = std::make_unique<PatchBuilder>(*intrinsicTriangulation, std::move(positions));
+  }
+  return *patches;
+}
+
 const WindingNumber& Surface::winding() {
   if (!windingNumber) windingNumber = std::make_unique<WindingNumber>(*inputGeometry);
   return *windingNumber;

@@ -3,6 +3,7 @@
 #include "mesh/cut_locus.h"
 #include "mesh/geodesics.h"
 #include "mesh/mesh_check.h"
+#include "mesh/patch.h"
 #include "mesh/winding.h"
 
 #include "geometrycentral/surface/signpost_intrinsic_triangulation.h"
@@ -34,6 +35,8 @@ public:
   const std::vector<std::vector<size_t>>& boundaryLoops() const { return boundary; }
   // Per-mesh data of the cut-locus detector, built on first use (not every caller needs it).
   const CutLocusSolver& cutLocusSolver();
+  // Builder of the intrinsic triangulation's patches that loops are shortened on, built on first use.
+  PatchBuilder& patchBuilder();
   // Winding numbers of the input mesh (mesh/winding.h), built on first use.
   const WindingNumber& winding();
 
@@ -44,6 +47,7 @@ private:
   std::unique_ptr<geometrycentral::surface::SignpostIntrinsicTriangulation> intrinsicTriangulation;
   std::unique_ptr<Geodesics> geodesicSolver;
   std::unique_ptr<CutLocusSolver> cutLocus;
+  std::unique_ptr<PatchBuilder> patches;
   std::unique_ptr<WindingNumber> windingNumber;
   std::vector<std::vector<size_t>> boundary;
 };

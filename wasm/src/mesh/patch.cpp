@@ -1,0 +1,188 @@
+#include "mesh/patch.h"
+
+#include "cscd/union_find.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+using namespace geometrycentral;
+using namespace geometrycentral::surface;
+
+namespace cscd {
+namespace {
+
+// geometry-central keeps its constructor from halfedge arrays for its own copies.
+struct ArrayMesh : ManifoldSurfaceMesh {
+  ArrayMesh(const std::vector<size_t>& heNext, const std::vector<size_t>& heVertex, const std::vector<size_t>& heFace,
+            const std::vector<size_t>& vHalfedge, const std::vector<size_t>& fHalfedge, size_t nBoundaryLoops)
+      : ManifoldSurfaceMesh(heNext, heVertex, heFace, vHalfedge, fHalfedge, nBoundaryLoops) {}
+};
+
+} // namespace
+
+Halfedge Patch::fromIntrinsic(Halfedge intrinsicHalfedge) const {
+  const uint32_t face = uint32_t(intrinsicHalfedge.face().getIndex());
+  auto at = std::lower_bound(faces.begin(), faces.end(), face);
+  if (at == faces.end() || *at != face) throw std::out_of_range("patch: a halfedge of a face outside the patch");
+  Halfedge first = intrinsicHalfedge.face().halfedge();
+  const size_t k = intrinsicHalfedge == first ? 0 : intrinsicHalfedge == first.next() ? 1 : 2;
+  return mesh->halfedge(cornerHalfedge[3 * size_t(at - faces.begin()) + k]);
+}
+
+PatchBuilder::PatchBuilder(SignpostIntrinsicTriangulation& intrinsic_, std::vector<Vector3> vertexPositions)
+    : intrinsic(intrinsic_), positions(std::move(vertexPositions)) {
+  ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
+  intrinsic.requireEdgeLengths();
+  halfedgeFace.assign(mesh.nHalfedges(), kNone);
+  halfedgeCorner.assign(mesh.nHalfedges(), 0);
+  halfedgeTwin.resize(mesh.nHalfedges());
+  halfedgeLength.resize(mesh.nHalfedges());
+  for (Halfedge h : mesh.halfedges()) {
+    halfedgeTwin[h.getIndex()] = uint32_t(h.twin().getIndex());
+    halfedgeLength[h.getIndex()] = intrinsic.edgeLengths[h.edge()];
+  }
+  for (Face f : mesh.faces()) {
+    uint8_t k = 0;
+    for (Halfedge h : f.adjacentHalfedges()) {
+      faceHalfedge.push_back(uint32_t(h.getIndex()));
+      faceVertex.push_back(uint32_t(h.tailVertex().getIndex()));
+      halfedgeFace[h.getIndex()] = uint32_t(f.getIndex());
+      halfedgeCorner[h.getIndex()] = k++;
+    }
+  }
+  slot.assign(mesh.nFaces(), kNone);
+  chosen.assign(mesh.nFaces(), 0);
+}
+
+std::vector<uint32_t> PatchBuilder::facesFor(const std::optional<Sphere>& sphere, const std::vector<size_t>& loopVertices) {
+  const size_t nFaces = slot.size();
+  std::vector<uint32_t> faces;
+  if (!sphere) {
+    faces.resize(nFaces);
+    for (size_t f = 0; f < nFaces; f++) faces[f] = uint32_t(f);
+    return faces;
+  }
+  const double r2 = sphere->radius * sphere->radius * (1 + 1e-9);
+  // Each vertex tested once (not once per face around it).
+  std::vector<char> inside(positions.size());
+  for (size_t v = 0; v < inside.size(); v++) inside[v] = norm2(positions[v] - sphere->center) <= r2;
+  for (size_t f = 0; f < nFaces; f++)
+    chosen[f] = inside[faceVertex[3 * f]] && inside[faceVertex[3 * f + 1]] && inside[faceVertex[3 * f + 2]];
+  ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
+  for (size_t v : loopVertices)
+    for (Face f : mesh.vertex(v).adjacentFaces()) chosen[f.getIndex()] = 1;
+  for (size_t f = 0; f < nFaces; f++)
+    if (chosen[f]) {
+      faces.push_back(uint32_t(f));
+      chosen[f] = 0;
+    }
+  return faces;
+}
+
+Patch PatchBuilder::build(const std::vector<uint32_t>& faces) {
+  const size_t nFaces = faces.size();
+  for (size_t i = 0; i < nFaces; i++) slot[faces[i]] = uint32_t(i);
+  struct ClearSlots { // the scratch is left clean whichever way build() ends
+    std::vector<uint32_t>& slot;
+    const std::vector<uint32_t>& faces;
+    ~ClearSlots() {
+      for (uint32_t f : faces) slot[f] = kNone;
+    }
+  } clear{slot, faces};
+
+  // Corner of intrinsic halfedge h (of a patch face): the corner at h's tail in h's face.
+  auto corner = [&](uint32_t h) { return 3 * size_t(slot[halfedgeFace[h]]) + halfedgeCorner[h]; };
+  // The twin of h when its face is in the patch, else kNone.
+  auto twinInPatch = [&](uint32_t h) {
+    const uint32_t t = halfedgeTwin[h];
+    return halfedgeFace[t] != kNone && slot[halfedgeFace[t]] != kNone ? t : kNone;
+  };
+  UnionFind fans(3 * nFaces);
+  for (size_t i = 0; i < nFaces; i++)
+    for (size_t k = 0; k < 3; k++) {
+      const uint32_t h = faceHalfedge[3 * size_t(faces[i]) + k], t = twinInPatch(h);
+      if (t == kNone) continue;
+      const size_t tFace = 3 * size_t(halfedgeFace[t]);
+      const uint32_t tNext = faceHalfedge[tFace + (halfedgeCorner[t] + 1) % 3];
+      fans.unite(uint32_t(3 * i + k), uint32_t(corner(tNext)));
+      fans.unite(uint32_t(3 * i + (k + 1) % 3), uint32_t(corner(t)));
+    }
+
+  // One patch vertex per fan, numbered in corner order.
+  std::vector<size_t> cornerVertex(3 * nFaces), patchVertexOfFan(3 * nFaces, INVALID_IND);
+  size_t nPatchVertices = 0;
+  for (size_t c = 0; c < 3 * nFaces; c++) {
+    size_t fan = fans.find(uint32_t(c));
+    if (patchVertexOfFan[fan] == INVALID_IND) patchVertexOfFan[fan] = nPatchVertices++;
+    cornerVertex[c] = patchVertexOfFan[fan];
+  }
+
+  // The halfedge arrays, numbered as ManifoldSurfaceMesh(polygons, twins) numbers them (face by face,
+  // a new edge when the twin is not made yet, then the boundary loops), built directly: that
+  // constructor's hash map of twins was most of the time spent on a patch. Twins come from the
+  // triangulation, which can have several edges between the same two vertices.
+  std::vector<size_t> heNext, heVertex, heFace, vHalfedge(nPatchVertices, INVALID_IND), fHalfedge(nFaces, INVALID_IND);
+  std::vector<size_t> cornerHalfedge(3 * nFaces, INVALID_IND); // patch halfedge leaving each corner
+  for (size_t i = 0; i < nFaces; i++) {
+    for (size_t k = 0; k < 3; k++) {
+      const size_t tail = cornerVertex[3 * i + k], tip = cornerVertex[3 * i + (k + 1) % 3];
+      if (tail == tip) throw std::runtime_error("patch: a self-edge");
+      const uint32_t t = twinInPatch(faceHalfedge[3 * size_t(faces[i]) + k]);
+      const size_t twin = t != kNone ? cornerHalfedge[corner(t)] : INVALID_IND;
+      size_t he;
+      if (twin == INVALID_IND) {
+        he = heNext.size();
+        heNext.insert(heNext.end(), {INVALID_IND, INVALID_IND});
+        heVertex.insert(heVertex.end(), {tail, tip});
+        heFace.insert(heFace.end(), {INVALID_IND, INVALID_IND});
+      } else {
+        he = twin ^ 1;
+      }
+      cornerHalfedge[3 * i + k] = he;
+      heFace[he] = i;
+      vHalfedge[tail] = he;
+      if (k == 0) fHalfedge[i] = he;
+      else heNext[cornerHalfedge[3 * i + k - 1]] = he;
+    }
+    heNext[cornerHalfedge[3 * i + 2]] = cornerHalfedge[3 * i];
+  }
+  // Boundary loops, walked as the constructor walks them.
+  size_t nBoundaryLoops = 0;
+  for (size_t first = 0; first < heNext.size(); first++) {
+    if (heFace[first] != INVALID_IND) continue;
+    const size_t loop = nFaces + nBoundaryLoops++;
+    fHalfedge.push_back(first);
+    size_t current = first, steps = 0;
+    do {
+      heFace[current] = loop;
+      vHalfedge[heVertex[current ^ 1]] = current ^ 1;
+      size_t previous = current;
+      current = heNext[current ^ 1] ^ 1;
+      while (heFace[current] != INVALID_IND && current != first) current = heNext[current] ^ 1;
+      heNext[current] = previous;
+      if (++steps > heNext.size()) throw std::runtime_error("patch: a boundary that does not close");
+    } while (current != first);
+  }
+
+  Patch patch;
+  patch.mesh = std::make_unique<ArrayMesh>(heNext, heVertex, heFace, vHalfedge, fHalfedge, nBoundaryLoops);
+  patch.toIntrinsic = HalfedgeData<Halfedge>(*patch.mesh);
+  ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
+  EdgeData<double> lengths(*patch.mesh, 0.);
+  for (size_t c = 0; c < 3 * nFaces; c++) {
+    const uint32_t ih = faceHalfedge[3 * size_t(faces[c / 3]) + c % 3];
+    Halfedge ph = patch.mesh->halfedge(cornerHalfedge[c]);
+    patch.toIntrinsic[ph] = mesh.halfedge(ih);
+    lengths[ph.edge()] = halfedgeLength[ih];
+  }
+  double sum = 0;
+  for (Edge e : patch.mesh->edges()) sum += lengths[e];
+  if (sum > 0) patch.scale = sum / patch.mesh->nEdges();
+  for (Edge e : patch.mesh->edges()) lengths[e] /= patch.scale;
+  patch.geometry = std::make_unique<EdgeLengthGeometry>(*patch.mesh, lengths);
+  patch.cornerHalfedge = std::move(cornerHalfedge);
+  patch.faces = faces; // a copy: `clear` still needs them
+  return patch;
+}
+
+} // namespace cscd

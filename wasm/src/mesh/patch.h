@@ -1,0 +1,65 @@
+#pragma once
+
+#include "cscd/sphere.h"
+
+#include "geometrycentral/surface/edge_length_geometry.h"
+#include "geometrycentral/surface/signpost_intrinsic_triangulation.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace cscd {
+
+// A patch of the intrinsic triangulation as a mesh of its own, with the maps back to the triangulation.
+struct Patch {
+  std::unique_ptr<geometrycentral::surface::ManifoldSurfaceMesh> mesh;
+  std::unique_ptr<geometrycentral::surface::EdgeLengthGeometry> geometry;
+  geometrycentral::surface::HalfedgeData<geometrycentral::surface::Halfedge> toIntrinsic; // interior halfedges
+  // Edge lengths are divided by their mean: FlipOut's angle and length tolerances are absolute, and a
+  // mesh at 1e30 (or 1e-30) would make it flip forever.
+  double scale = 1;
+
+  // The patch halfedge of an intrinsic halfedge of one of the patch's faces; throws std::out_of_range
+  // for a face outside the patch.
+  geometrycentral::surface::Halfedge fromIntrinsic(geometrycentral::surface::Halfedge intrinsicHalfedge) const;
+
+  std::vector<uint32_t> faces;       // the intrinsic faces, increasing
+  std::vector<size_t> cornerHalfedge; // patch halfedge leaving corner k of faces[i], at 3 i + k
+};
+
+// Builds patches of one intrinsic triangulation, which must not change afterwards. Its connectivity,
+// edge lengths and vertex positions are copied once into flat arrays, so that choosing and building a
+// patch costs time in proportion to the patch (and one pass over the vertices for the sphere), not to
+// geometry-central's halfedge navigation over the whole triangulation for every loop.
+class PatchBuilder {
+public:
+  PatchBuilder(geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic,
+               std::vector<geometrycentral::Vector3> vertexPositions);
+
+  // The faces whose corners all lie inside the sphere (every face without one), and the faces around
+  // the loop's vertices, so that the loop is a path of the patch through single fans. Increasing.
+  std::vector<uint32_t> facesFor(const std::optional<Sphere>& sphere, const std::vector<size_t>& loopVertices);
+
+  // The patch of those faces. A vertex whose faces in the patch form several fans (a bow-tie inside
+  // the patch) becomes one patch vertex per fan, so the patch is always a manifold. Throws
+  // std::runtime_error when the faces cannot make one (a self-edge, a boundary that does not close).
+  Patch build(const std::vector<uint32_t>& faces);
+
+private:
+  static constexpr uint32_t kNone = UINT32_MAX;
+  geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic;
+  std::vector<geometrycentral::Vector3> positions;
+  std::vector<uint32_t> faceHalfedge; // 3 per face, from face.halfedge() on
+  std::vector<uint32_t> faceVertex;   // tails of those halfedges
+  std::vector<uint32_t> halfedgeFace; // kNone on the boundary
+  std::vector<uint8_t> halfedgeCorner; // position of the halfedge in its face
+  std::vector<uint32_t> halfedgeTwin;
+  std::vector<double> halfedgeLength;
+  // Scratch, sized to the triangulation and left clean after each call.
+  std::vector<uint32_t> slot; // per face: its index in the patch being built
+  std::vector<char> chosen;   // per face: in the patch being chosen
+};
+
+} // namespace cscd

@@ -3,6 +3,7 @@
 #include "cscd/union_find.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 using namespace geometrycentral;
@@ -19,6 +20,28 @@ struct ArrayMesh : ManifoldSurfaceMesh {
 };
 
 } // namespace
+
+PatchGeometry::PatchGeometry(ManifoldSurfaceMesh& mesh, EdgeData<double>& lengths, double scale_,
+                             std::vector<uint32_t> wholeFace_, std::vector<uint32_t> wholeHalfedge_,
+                             const std::vector<double>& wholeCornerAngle_, const std::vector<double>& wholeFaceArea_,
+                             const std::vector<Vector2>& wholeHalfedgeVector_)
+    : EdgeLengthGeometry(mesh, lengths), scale(scale_), wholeFace(std::move(wholeFace_)), wholeHalfedge(std::move(wholeHalfedge_)),
+      wholeCornerAngle(wholeCornerAngle_), wholeFaceArea(wholeFaceArea_), wholeHalfedgeVector(wholeHalfedgeVector_) {}
+
+void PatchGeometry::computeCornerAngles() {
+  cornerAngles = CornerData<double>(mesh);
+  for (Corner c : mesh.corners()) cornerAngles[c] = wholeCornerAngle[wholeHalfedge[c.halfedge().getIndex()]];
+}
+
+void PatchGeometry::computeFaceAreas() {
+  faceAreas = FaceData<double>(mesh);
+  for (Face f : mesh.faces()) faceAreas[f] = wholeFaceArea[wholeFace[f.getIndex()]] / (scale * scale);
+}
+
+void PatchGeometry::computeHalfedgeVectorsInFace() {
+  halfedgeVectorsInFace = HalfedgeData<Vector2>(mesh, Vector2::undefined());
+  for (Halfedge h : mesh.interiorHalfedges()) halfedgeVectorsInFace[h] = wholeHalfedgeVector[wholeHalfedge[h.getIndex()]] / scale;
+}
 
 Halfedge Patch::fromIntrinsic(Halfedge intrinsicHalfedge) const {
   const uint32_t face = uint32_t(intrinsicHalfedge.face().getIndex());
@@ -41,13 +64,23 @@ PatchBuilder::PatchBuilder(SignpostIntrinsicTriangulation& intrinsic_, std::vect
     halfedgeTwin[h.getIndex()] = uint32_t(h.twin().getIndex());
     halfedgeLength[h.getIndex()] = intrinsic.edgeLengths[h.edge()];
   }
+  EdgeLengthGeometry whole(mesh, intrinsic.edgeLengths);
+  whole.requireCornerAngles();
+  whole.requireFaceAreas();
+  whole.requireHalfedgeVectorsInFace();
+  cornerAngle.resize(mesh.nHalfedges());
+  halfedgeVector.resize(mesh.nHalfedges());
+  faceArea.resize(mesh.nFaces());
   for (Face f : mesh.faces()) {
+    faceArea[f.getIndex()] = whole.faceAreas[f];
     uint8_t k = 0;
     for (Halfedge h : f.adjacentHalfedges()) {
       faceHalfedge.push_back(uint32_t(h.getIndex()));
       faceVertex.push_back(uint32_t(h.tailVertex().getIndex()));
       halfedgeFace[h.getIndex()] = uint32_t(f.getIndex());
       halfedgeCorner[h.getIndex()] = k++;
+      cornerAngle[h.getIndex()] = whole.cornerAngles[h.corner()];
+      halfedgeVector[h.getIndex()] = whole.halfedgeVectorsInFace[h];
     }
   }
   slot.assign(mesh.nFaces(), kNone);
@@ -169,17 +202,21 @@ Patch PatchBuilder::build(const std::vector<uint32_t>& faces) {
   patch.toIntrinsic = HalfedgeData<Halfedge>(*patch.mesh);
   ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
   EdgeData<double> lengths(*patch.mesh, 0.);
+  std::vector<uint32_t> wholeHalfedge(patch.mesh->nHalfedges(), kNone);
   for (size_t c = 0; c < 3 * nFaces; c++) {
     const uint32_t ih = faceHalfedge[3 * size_t(faces[c / 3]) + c % 3];
     Halfedge ph = patch.mesh->halfedge(cornerHalfedge[c]);
     patch.toIntrinsic[ph] = mesh.halfedge(ih);
+    wholeHalfedge[cornerHalfedge[c]] = ih;
     lengths[ph.edge()] = halfedgeLength[ih];
   }
   double sum = 0;
   for (Edge e : patch.mesh->edges()) sum += lengths[e];
-  if (sum > 0) patch.scale = sum / patch.mesh->nEdges();
+  // A power of two, so that the patch's lengths, angles and areas are the triangulation's scaled exactly.
+  if (sum > 0) patch.scale = std::exp2(std::round(std::log2(sum / patch.mesh->nEdges())));
   for (Edge e : patch.mesh->edges()) lengths[e] /= patch.scale;
-  patch.geometry = std::make_unique<EdgeLengthGeometry>(*patch.mesh, lengths);
+  patch.geometry = std::make_unique<PatchGeometry>(*patch.mesh, lengths, patch.scale, faces, std::move(wholeHalfedge),
+                                                   cornerAngle, faceArea, halfedgeVector);
   patch.cornerHalfedge = std::move(cornerHalfedge);
   patch.faces = faces; // a copy: `clear` still needs them
   return patch;

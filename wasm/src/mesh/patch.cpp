@@ -1,7 +1,5 @@
 #include "mesh/patch.h"
 
-#include "cscd/union_find.h"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -130,24 +128,26 @@ Patch PatchBuilder::build(const std::vector<uint32_t>& faces) {
     const uint32_t t = halfedgeTwin[h];
     return halfedgeFace[t] != kNone && slot[halfedgeFace[t]] != kNone ? t : kNone;
   };
-  UnionFind fans(3 * nFaces);
-  for (size_t i = 0; i < nFaces; i++)
-    for (size_t k = 0; k < 3; k++) {
-      const uint32_t h = faceHalfedge[3 * size_t(faces[i]) + k], t = twinInPatch(h);
-      if (t == kNone) continue;
-      const size_t tFace = 3 * size_t(halfedgeFace[t]);
-      const uint32_t tNext = faceHalfedge[tFace + (halfedgeCorner[t] + 1) % 3];
-      fans.unite(uint32_t(3 * i + k), uint32_t(corner(tNext)));
-      fans.unite(uint32_t(3 * i + (k + 1) % 3), uint32_t(corner(t)));
-    }
-
-  // One patch vertex per fan, numbered in corner order.
-  std::vector<size_t> cornerVertex(3 * nFaces), patchVertexOfFan(3 * nFaces, INVALID_IND);
+  // The corner of the same vertex across the edge that leaves (arrives at) corner c's vertex in c's
+  // face, when that edge's other face is in the patch; else INVALID_IND. A fan is a path or a cycle
+  // of corners linked so.
+  auto cornerAcrossOut = [&](size_t c) {
+    const uint32_t t = twinInPatch(faceHalfedge[3 * size_t(faces[c / 3]) + c % 3]);
+    return t == kNone ? INVALID_IND : corner(faceHalfedge[3 * size_t(halfedgeFace[t]) + (halfedgeCorner[t] + 1) % 3]);
+  };
+  auto cornerAcrossIn = [&](size_t c) {
+    const uint32_t t = twinInPatch(faceHalfedge[3 * size_t(faces[c / 3]) + (c % 3 + 2) % 3]);
+    return t == kNone ? INVALID_IND : corner(t);
+  };
+  // One patch vertex per fan, numbered in the order of the fans' first corners.
+  std::vector<size_t> cornerVertex(3 * nFaces, INVALID_IND);
   size_t nPatchVertices = 0;
   for (size_t c = 0; c < 3 * nFaces; c++) {
-    size_t fan = fans.find(uint32_t(c));
-    if (patchVertexOfFan[fan] == INVALID_IND) patchVertexOfFan[fan] = nPatchVertices++;
-    cornerVertex[c] = patchVertexOfFan[fan];
+    if (cornerVertex[c] != INVALID_IND) continue;
+    const size_t vertex = nPatchVertices++;
+    cornerVertex[c] = vertex;
+    for (size_t d = cornerAcrossOut(c); d != INVALID_IND && cornerVertex[d] == INVALID_IND; d = cornerAcrossOut(d)) cornerVertex[d] = vertex;
+    for (size_t d = cornerAcrossIn(c); d != INVALID_IND && cornerVertex[d] == INVALID_IND; d = cornerAcrossIn(d)) cornerVertex[d] = vertex;
   }
 
   // The halfedge arrays, numbered as ManifoldSurfaceMesh(polygons, twins) numbers them (face by face,
@@ -156,6 +156,7 @@ Patch PatchBuilder::build(const std::vector<uint32_t>& faces) {
   // triangulation, which can have several edges between the same two vertices.
   std::vector<size_t> heNext, heVertex, heFace, vHalfedge(nPatchVertices, INVALID_IND), fHalfedge(nFaces, INVALID_IND);
   std::vector<size_t> cornerHalfedge(3 * nFaces, INVALID_IND); // patch halfedge leaving each corner
+  for (auto* array : {&heNext, &heVertex, &heFace}) array->reserve(6 * nFaces);
   for (size_t i = 0; i < nFaces; i++) {
     for (size_t k = 0; k < 3; k++) {
       const size_t tail = cornerVertex[3 * i + k], tip = cornerVertex[3 * i + (k + 1) % 3];
@@ -165,9 +166,10 @@ Patch PatchBuilder::build(const std::vector<uint32_t>& faces) {
       size_t he;
       if (twin == INVALID_IND) {
         he = heNext.size();
-        heNext.insert(heNext.end(), {INVALID_IND, INVALID_IND});
-        heVertex.insert(heVertex.end(), {tail, tip});
-        heFace.insert(heFace.end(), {INVALID_IND, INVALID_IND});
+        heNext.resize(he + 2, INVALID_IND);
+        heFace.resize(he + 2, INVALID_IND);
+        heVertex.push_back(tail);
+        heVertex.push_back(tip);
       } else {
         he = twin ^ 1;
       }

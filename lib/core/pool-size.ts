@@ -5,20 +5,21 @@ import type { RunSettings } from './options.ts';
 
 /**
  * A core's peak memory (Core.memoryMB) after a skeleton of 12 sources in rounds of 4, fitted as
- * a + b·V over 11 shared meshes of 2.9K-48K vertices (scripts/core-memory.ts, docs/parallel.md); no
- * core is below its initial 64 MB.
+ * a + b·V over 11 shared meshes of 2.9K-48K vertices (scripts/core-memory.ts, docs/parallel.md;
+ * measured again 2026-12-03 with the loop patches' flat arrays); no core is below its initial 64 MB.
  */
-export const CORE_MEMORY = Object.freeze({ baseMB: 34, perVertexMB: 0.00385, initialMB: 64 });
+export const CORE_MEMORY = Object.freeze({ baseMB: 32, perVertexMB: 0.00536, initialMB: 64 });
 
 /** Estimated memory of one thread's core on a mesh of `vertices` vertices (the mesh computed on). */
 export const coreMemoryMB = (vertices: number) => Math.max(CORE_MEMORY.initialMB, CORE_MEMORY.baseMB + CORE_MEMORY.perVertexMB * vertices);
 
 /**
- * A cloud's core holds about as much per point as a mesh's per two vertices (the neighbourhood graph,
- * the tufted triangulation, the MLS kd-tree): 191 MB after a skeleton of 12 sources on 20K-point
- * clouds (bob_clean, horse_clean), 77 MB on 6.5K points; so a cloud of P points is sized as a mesh of 2P.
+ * A cloud's core holds about as much per point as a mesh's per one and a half vertices (the
+ * neighbourhood graph, the tufted triangulation, the MLS kd-tree): 191 MB after a skeleton of 12
+ * sources on 20K-point clouds (bob_clean, horse_clean), 77 MB on 6.5K points, which the mesh fit above
+ * gives at 30K and 8.4K vertices; so a cloud of P points is sized as a mesh of 1.5 P.
  */
-export const CLOUD_VERTICES_PER_POINT = 2;
+export const CLOUD_VERTICES_PER_POINT = 1.5;
 
 /** The memory budget of a pool when the machine's memory is not known. */
 export const FALLBACK_BUDGET_MB = 2048;

@@ -9,8 +9,8 @@ const base: PoolSizeInput = { workers: 'auto', cores: 8, memoryGB: 8, vertices: 
 describe('coreMemoryMB', () => {
   it('grows with the mesh from the core initial 64 MB, as measured (docs/parallel.md)', () => {
     expect(coreMemoryMB(3_000)).toBe(64);
-    expect(coreMemoryMB(48_485)).toBeCloseTo(34 + 0.00385 * 48_485, 6); // horse: measured 229 MB
-    expect(coreMemoryMB(1_000_000)).toBeCloseTo(3884, 6);
+    expect(coreMemoryMB(48_485)).toBeCloseTo(32 + 0.00536 * 48_485, 6); // horse: measured 275 MB
+    expect(coreMemoryMB(1_000_000)).toBeCloseTo(5392, 6);
   });
 });
 
@@ -28,14 +28,16 @@ describe('poolSize', () => {
   });
 
   it('auto: a quarter of the memory (2 GB when unknown) over the estimate per core, the calling thread counted', () => {
-    // 1M vertices: 3884 MB per core; a quarter of 8 GB holds none, so the caller's thread alone.
+    // 1M vertices: 5392 MB per core; a quarter of 8 GB holds none, so the caller's thread alone.
     expect(poolSize({ ...base, vertices: 1_000_000 })).toEqual({ workers: 1, memoryCapped: true });
-    // 100K vertices: 419 MB per core; 2048 MB hold 4 cores: 3 workers and the caller's.
-    expect(poolSize({ ...base, vertices: 100_000 })).toEqual({ workers: 3, memoryCapped: true });
-    expect(poolSize({ ...base, vertices: 100_000, memoryGB: null })).toEqual({ workers: 3, memoryCapped: true });
-    // 200K vertices: 804 MB per core; 2048 MB hold 2 cores, too few for a pool; 8192 MB (32 GB) hold 10, cut by the cores to 7.
+    // 100K vertices: 568 MB per core; 2048 MB hold 3 cores: 2 workers and the caller's.
+    expect(poolSize({ ...base, vertices: 100_000 })).toEqual({ workers: 2, memoryCapped: true });
+    expect(poolSize({ ...base, vertices: 100_000, memoryGB: null })).toEqual({ workers: 2, memoryCapped: true });
+    // 200K vertices: 1104 MB per core; 2048 MB hold 1 core, too few for a pool; 8192 MB (32 GB) hold 7: 6 workers, one fewer than the cores allow.
     expect(poolSize({ ...base, vertices: 200_000 })).toEqual({ workers: 1, memoryCapped: true });
-    expect(poolSize({ ...base, vertices: 200_000, memoryGB: 32 })).toEqual({ workers: 7, memoryCapped: false });
+    expect(poolSize({ ...base, vertices: 200_000, memoryGB: 32 })).toEqual({ workers: 6, memoryCapped: true });
+    // 32 GB and 100K vertices: 8192 MB hold 14 cores, cut by the cores to 7.
+    expect(poolSize({ ...base, vertices: 100_000, memoryGB: 32 })).toEqual({ workers: 7, memoryCapped: false });
     // Capped by the round, not by memory: nothing to say about memory.
     expect(poolSize({ ...base, vertices: 200_000, memoryGB: 32, roundSize: 2 })).toEqual({ workers: 2, memoryCapped: false });
   });

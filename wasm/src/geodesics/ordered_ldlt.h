@@ -17,12 +17,11 @@ public:
   // solvers) or if the factorization fails (std::invalid_argument).
   explicit OrderedLDLT(Eigen::SparseMatrix<double>& matrix);
 
-  size_t size() const { return size_t(ldlt.rows()); }
   // Where a row of the matrix is in the factor's order.
   size_t position(size_t row) const { return size_t(ldlt.permutationP().indices()[Eigen::Index(row)]); }
 
   // x: a right-hand side in the factor's order, replaced by the solution (in that order). Throws
-  // std::invalid_argument on a non-finite entry.
+  // std::logic_error on a non-finite entry (as geometry-central's solvers).
   void solveInPlace(Eigen::VectorXd& x) const;
 
 private:

@@ -23,7 +23,7 @@ PatchGeometry::PatchGeometry(ManifoldSurfaceMesh& mesh, EdgeData<double>& length
                              std::vector<uint32_t> wholeFace_, std::vector<uint32_t> wholeHalfedge_,
                              const std::vector<double>& wholeCornerAngle_, const std::vector<double>& wholeFaceArea_,
                              const std::vector<Vector2>& wholeHalfedgeVector_)
-    : EdgeLengthGeometry(mesh, lengths), scale(scale_), wholeFace(std::move(wholeFace_)), wholeHalfedge(std::move(wholeHalfedge_)),
+    : EdgeLengthGeometry(mesh, lengths), lengthScale(scale_), wholeFace(std::move(wholeFace_)), wholeHalfedge(std::move(wholeHalfedge_)),
       wholeCornerAngle(wholeCornerAngle_), wholeFaceArea(wholeFaceArea_), wholeHalfedgeVector(wholeHalfedgeVector_) {}
 
 void PatchGeometry::computeCornerAngles() {
@@ -33,15 +33,21 @@ void PatchGeometry::computeCornerAngles() {
 
 void PatchGeometry::computeFaceAreas() {
   faceAreas = FaceData<double>(mesh);
-  for (Face f : mesh.faces()) faceAreas[f] = wholeFaceArea[wholeFace[f.getIndex()]] / (scale * scale);
+  for (Face f : mesh.faces()) faceAreas[f] = wholeFaceArea[wholeFace[f.getIndex()]] / (lengthScale * lengthScale);
 }
 
 void PatchGeometry::computeHalfedgeVectorsInFace() {
   halfedgeVectorsInFace = HalfedgeData<Vector2>(mesh, Vector2::undefined());
-  for (Halfedge h : mesh.interiorHalfedges()) halfedgeVectorsInFace[h] = wholeHalfedgeVector[wholeHalfedge[h.getIndex()]] / scale;
+  for (Halfedge h : mesh.interiorHalfedges()) halfedgeVectorsInFace[h] = wholeHalfedgeVector[wholeHalfedge[h.getIndex()]] / lengthScale;
+}
+
+Halfedge Patch::toIntrinsic(Halfedge patchHalfedge) const {
+  const uint32_t whole = geometry->wholeHalfedgeOf(patchHalfedge);
+  return whole == PatchGeometry::kNone ? Halfedge() : intrinsicMesh->halfedge(whole);
 }
 
 Halfedge Patch::fromIntrinsic(Halfedge intrinsicHalfedge) const {
+  const std::vector<uint32_t>& faces = geometry->wholeFaces();
   const uint32_t face = uint32_t(intrinsicHalfedge.face().getIndex());
   auto at = std::lower_bound(faces.begin(), faces.end(), face);
   if (at == faces.end() || *at != face) throw std::out_of_range("patch: a halfedge of a face outside the patch");
@@ -50,8 +56,8 @@ Halfedge Patch::fromIntrinsic(Halfedge intrinsicHalfedge) const {
   return mesh->halfedge(cornerHalfedge[3 * size_t(at - faces.begin()) + k]);
 }
 
-PatchBuilder::PatchBuilder(SignpostIntrinsicTriangulation& intrinsic_, std::vector<Vector3> vertexPositions)
-    : intrinsic(intrinsic_), positions(std::move(vertexPositions)) {
+PatchBuilder::PatchBuilder(SignpostIntrinsicTriangulation& intrinsic_, const VertexData<Vector3>& vertexPositions)
+    : intrinsic(intrinsic_), positions(vertexPositions) {
   ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
   intrinsic.requireEdgeLengths();
   halfedgeFace.assign(mesh.nHalfedges(), kNone);
@@ -200,27 +206,23 @@ Patch PatchBuilder::build(const std::vector<uint32_t>& faces) {
   }
 
   Patch patch;
+  patch.intrinsicMesh = intrinsic.intrinsicMesh.get();
   patch.mesh = std::make_unique<ArrayMesh>(heNext, heVertex, heFace, vHalfedge, fHalfedge, nBoundaryLoops);
-  patch.toIntrinsic = HalfedgeData<Halfedge>(*patch.mesh);
-  ManifoldSurfaceMesh& mesh = *intrinsic.intrinsicMesh;
   EdgeData<double> lengths(*patch.mesh, 0.);
   std::vector<uint32_t> wholeHalfedge(patch.mesh->nHalfedges(), kNone);
   for (size_t c = 0; c < 3 * nFaces; c++) {
     const uint32_t ih = faceHalfedge[3 * size_t(faces[c / 3]) + c % 3];
-    Halfedge ph = patch.mesh->halfedge(cornerHalfedge[c]);
-    patch.toIntrinsic[ph] = mesh.halfedge(ih);
     wholeHalfedge[cornerHalfedge[c]] = ih;
-    lengths[ph.edge()] = halfedgeLength[ih];
+    lengths[patch.mesh->halfedge(cornerHalfedge[c]).edge()] = halfedgeLength[ih];
   }
   double sum = 0;
   for (Edge e : patch.mesh->edges()) sum += lengths[e];
   // A power of two, so that the patch's lengths, angles and areas are the triangulation's scaled exactly.
-  if (sum > 0) patch.scale = std::exp2(std::round(std::log2(sum / patch.mesh->nEdges())));
-  for (Edge e : patch.mesh->edges()) lengths[e] /= patch.scale;
-  patch.geometry = std::make_unique<PatchGeometry>(*patch.mesh, lengths, patch.scale, faces, std::move(wholeHalfedge),
+  const double scale = sum > 0 ? std::exp2(std::round(std::log2(sum / patch.mesh->nEdges()))) : 1.;
+  for (Edge e : patch.mesh->edges()) lengths[e] /= scale;
+  patch.geometry = std::make_unique<PatchGeometry>(*patch.mesh, lengths, scale, faces, std::move(wholeHalfedge),
                                                    cornerAngle, faceArea, halfedgeVector);
   patch.cornerHalfedge = std::move(cornerHalfedge);
-  patch.faces = faces; // a copy: `clear` still needs them
   return patch;
 }
 

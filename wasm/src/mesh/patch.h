@@ -20,11 +20,17 @@ namespace cscd {
 class PatchGeometry : public geometrycentral::surface::EdgeLengthGeometry {
 public:
   // wholeFace / wholeHalfedge: the triangulation's face of each patch face and halfedge of each patch
-  // halfedge (interior ones); wholeX: the triangulation's quantities; lengths are divided by `scale`.
+  // halfedge (kNone for boundary ones); wholeX: the triangulation's quantities; lengths are divided by
+  // `scale`.
   PatchGeometry(geometrycentral::surface::ManifoldSurfaceMesh& mesh, geometrycentral::surface::EdgeData<double>& lengths,
                 double scale, std::vector<uint32_t> wholeFace, std::vector<uint32_t> wholeHalfedge,
                 const std::vector<double>& wholeCornerAngle, const std::vector<double>& wholeFaceArea,
                 const std::vector<geometrycentral::Vector2>& wholeHalfedgeVector);
+
+  static constexpr uint32_t kNone = UINT32_MAX;
+  double scale() const { return lengthScale; }
+  const std::vector<uint32_t>& wholeFaces() const { return wholeFace; }
+  uint32_t wholeHalfedgeOf(geometrycentral::surface::Halfedge patchHalfedge) const { return wholeHalfedge[patchHalfedge.getIndex()]; }
 
 protected:
   void computeCornerAngles() override;
@@ -32,7 +38,7 @@ protected:
   void computeHalfedgeVectorsInFace() override;
 
 private:
-  double scale;
+  double lengthScale;
   std::vector<uint32_t> wholeFace, wholeHalfedge;
   const std::vector<double>& wholeCornerAngle;
   const std::vector<double>& wholeFaceArea;
@@ -40,20 +46,21 @@ private:
 };
 
 // A patch of the intrinsic triangulation as a mesh of its own, with the maps back to the triangulation.
+// Its edge lengths are the triangulation's divided by the power of two nearest their mean (scale()):
+// FlipOut's angle and length tolerances are absolute, and a mesh at 1e30 (or 1e-30) would make it flip
+// forever.
 struct Patch {
+  geometrycentral::surface::ManifoldSurfaceMesh* intrinsicMesh = nullptr;
   std::unique_ptr<geometrycentral::surface::ManifoldSurfaceMesh> mesh;
-  std::unique_ptr<PatchGeometry> geometry;
-  geometrycentral::surface::HalfedgeData<geometrycentral::surface::Halfedge> toIntrinsic; // interior halfedges
-  // Edge lengths are divided by the power of two nearest their mean: FlipOut's angle and length
-  // tolerances are absolute, and a mesh at 1e30 (or 1e-30) would make it flip forever.
-  double scale = 1;
+  std::unique_ptr<PatchGeometry> geometry; // also the faces of the triangulation it was made of, increasing
+  std::vector<size_t> cornerHalfedge;      // patch halfedge leaving corner k of patch face i, at 3 i + k
 
+  double scale() const { return geometry->scale(); }
+  // The intrinsic halfedge of an interior patch halfedge (a null Halfedge for a boundary one).
+  geometrycentral::surface::Halfedge toIntrinsic(geometrycentral::surface::Halfedge patchHalfedge) const;
   // The patch halfedge of an intrinsic halfedge of one of the patch's faces; throws std::out_of_range
   // for a face outside the patch.
   geometrycentral::surface::Halfedge fromIntrinsic(geometrycentral::surface::Halfedge intrinsicHalfedge) const;
-
-  std::vector<uint32_t> faces;       // the intrinsic faces, increasing
-  std::vector<size_t> cornerHalfedge; // patch halfedge leaving corner k of faces[i], at 3 i + k
 };
 
 // Builds patches of one intrinsic triangulation, which must not change afterwards. Its connectivity,
@@ -62,8 +69,9 @@ struct Patch {
 // geometry-central's halfedge navigation over the whole triangulation for every loop.
 class PatchBuilder {
 public:
+  // vertexPositions: of the triangulation's input mesh (the same vertices), kept by reference.
   PatchBuilder(geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic,
-               std::vector<geometrycentral::Vector3> vertexPositions);
+               const geometrycentral::surface::VertexData<geometrycentral::Vector3>& vertexPositions);
 
   // The faces whose corners all lie inside the sphere (every face without one), and the faces around
   // the loop's vertices, so that the loop is a path of the patch through single fans. Increasing.
@@ -75,9 +83,9 @@ public:
   Patch build(const std::vector<uint32_t>& faces);
 
 private:
-  static constexpr uint32_t kNone = UINT32_MAX;
+  static constexpr uint32_t kNone = PatchGeometry::kNone;
   geometrycentral::surface::SignpostIntrinsicTriangulation& intrinsic;
-  std::vector<geometrycentral::Vector3> positions;
+  const geometrycentral::surface::VertexData<geometrycentral::Vector3>& positions;
   std::vector<uint32_t> faceHalfedge; // 3 per face, from face.halfedge() on
   std::vector<uint32_t> faceVertex;   // tails of those halfedges
   std::vector<uint32_t> halfedgeFace; // kNone on the boundary

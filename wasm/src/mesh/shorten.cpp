@@ -2,7 +2,6 @@
 
 #include "mesh/patch.h"
 
-#include "geometrycentral/surface/edge_length_geometry.h"
 #include "geometrycentral/surface/flip_geodesics.h"
 
 #include <algorithm>
@@ -22,10 +21,10 @@ namespace {
 // face point at a corner would be traced across the face, which lands off the corner on the boundary),
 // other points barycentric in the matching face.
 SurfacePoint toIntrinsic(const Patch& patch, const SurfacePoint& onPatch) {
-  if (onPatch.type == SurfacePointType::Vertex) return SurfacePoint(patch.toIntrinsic[onPatch.vertex.halfedge()].tailVertex());
+  if (onPatch.type == SurfacePointType::Vertex) return SurfacePoint(patch.toIntrinsic(onPatch.vertex.halfedge()).tailVertex());
   SurfacePoint p = onPatch.inSomeFace();
   Halfedge ph = p.face.halfedge();
-  Halfedge ih[3] = {patch.toIntrinsic[ph], patch.toIntrinsic[ph.next()], patch.toIntrinsic[ph.next().next()]};
+  Halfedge ih[3] = {patch.toIntrinsic(ph), patch.toIntrinsic(ph.next()), patch.toIntrinsic(ph.next().next())};
   Halfedge first = ih[0].face().halfedge();
   Vector3 bary{0, 0, 0};
   for (int k = 0; k < 3; k++) bary[ih[k] == first ? 0 : ih[k] == first.next() ? 1 : 2] = p.faceCoords[k];
@@ -138,7 +137,7 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, PatchBuilde
     return result;
   }
   // One intrinsic edge may be the whole loop (e.g. a meridian of a torus as a self-edge): that is fine.
-  result.length = network.length() * patch->scale;
+  result.length = network.length() * patch->scale();
 
   std::vector<std::vector<SurfacePoint>> polylines = network.getPathPolyline();
   std::vector<SurfacePoint>& onPatch = polylines.front();
@@ -161,7 +160,7 @@ ShortenedLoop shortenLoop(SignpostIntrinsicTriangulation& intrinsic, PatchBuilde
       return true;
     });
   }
-  for (double& a : result.areas) a *= patch->scale * patch->scale;
+  for (double& a : result.areas) a *= patch->scale() * patch->scale();
   return result;
 }
 

@@ -37,11 +37,7 @@ const CutLocusSolver& Surface::cutLocusSolver() {
 }
 
 PatchBuilder& Surface::patchBuilder() {
-  if (!patches) {
-    std::vector<geometrycentral::Vector3> positions(inputGeometry->vertexPositions.raw().data(),
-                                                    inputGeometry->vertexPositions.raw().data() + vertexCount());
-    patches = std::make_unique<PatchBuilder>(*intrinsicTriangulation, std::move(positions));
-  }
+  if (!patches) patches = std::make_unique<PatchBuilder>(*intrinsicTriangulation, inputGeometry->vertexPositions);
   return *patches;
 }
 

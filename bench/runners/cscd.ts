@@ -38,7 +38,7 @@ const core = await loadCoreNode();
 
 const started = performance.now();
 // The pool's threads open the mesh while this one does (a failure of either ends the process).
-const opening = workers > 1 ? openNodePool(mesh, options, { workers }) : null;
+const opening = workers > 1 ? openNodePool(core.stage1Input(mesh, options), options, { workers }) : null;
 const surface = core.openRefinedSurface(mesh);
 const pool = await opening;
 let skeleton;

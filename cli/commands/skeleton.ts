@@ -8,7 +8,7 @@ import { CLOUD_VERTICES_PER_POINT, poolSize } from '../../lib/core/pool-size.ts'
 import type { CloudOptions, Options, Pipeline, PipelineProgress, ShapeOptions, Skeleton } from '../../lib/core/types.ts';
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
 import {
-  UsageError, decimateIfAsked, decimateOption, openCloud, openSolver, readShape, refuseFlags,
+  UsageError, decimateIfAsked, decimateOption, getCore, openCloud, openSolver, readShape, refuseFlags,
   type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues, type Output,
 } from '../command.ts';
 import { cloudFlagSpecs, cloudOptionsFromFlags, optionFlagSpecs, optionsFromFlags, settingFlagSpecs, settingsFromFlags } from './separator.ts';
@@ -146,7 +146,7 @@ async function runPipeline(pipeline: Pipeline, workers: Parameters<typeof runSta
 
 async function meshSkeleton(mesh: InputMesh, options: Options, settings: RunSettings, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {
   const workers = threadsFor(settings, options, mesh.positions.length / 3);
-  return onPool(workers > 1 ? openNodePool(mesh, options, { workers }) : null, () => openSolver(mesh, file, io), options, file, io, progress);
+  return onPool(workers > 1 ? openNodePool((await getCore()).stage1Input(mesh, options), options, { workers }) : null, () => openSolver(mesh, file, io), options, file, io, progress);
 }
 
 async function cloudSkeleton(shape: InputCloud, options: CloudOptions, settings: RunSettings, file: string, io: CliIo, progress: ProgressLine): Promise<Skeleton> {

@@ -35,6 +35,7 @@ import {
   type Skeleton,
   type Sphere,
   type SkeletonInput,
+  type Stage1Input,
   type Surface,
   type SurfacePoint,
 } from './types.ts';
@@ -384,6 +385,11 @@ class WasmCore implements Core {
     const facts = this.inspect(mesh);
     const stage1 = stage1Mesh(mesh, facts, options.stage1Vertices ?? defaultOptions.stage1Vertices);
     return stage1 ? this.openSurface(stage1.mesh) : this.refinedSurface(mesh, facts);
+  }
+
+  stage1Input(mesh: MeshArrays, options: Partial<Options> = {}): Stage1Input {
+    const stage1 = stage1Mesh(mesh, this.inspect(mesh), options.stage1Vertices ?? defaultOptions.stage1Vertices);
+    return stage1 ? { mesh: stage1.mesh, refine: false } : { mesh, refine: true };
   }
 
   openRefinedSurface(mesh: MeshArrays): RefinedSurface {

@@ -4,7 +4,7 @@
 import { Worker } from 'node:worker_threads';
 import { compiledCore } from './node.ts';
 import { PooledWorker, startError, type PoolReady, type PoolReply, type PoolRequest, type PoolStart } from './pool-worker.ts';
-import { CoreError, type CloudArrays, type CloudOptions, type MeshArrays, type Options } from './types.ts';
+import { CoreError, type CloudArrays, type CloudOptions, type Options, type Stage1Input } from './types.ts';
 
 export interface PoolSettings {
   /** Threads that compute stage 1 (1: none but the caller's, no pool); the caller's only draws and accepts. */
@@ -30,9 +30,14 @@ export class ThreadWorker extends PooledWorker {
   }
 }
 
-/** `workers` threads (none for 1), each ready (its surface and pipeline open) when this resolves. */
-export function openNodePool(mesh: MeshArrays, options: Partial<Options>, settings: PoolSettings): Promise<NodePool> {
-  return openPool(settings, (wasm) => ({ mesh: { positions: mesh.positions, triangles: mesh.triangles }, refine: true, options, memoryLimitMB: settings.memoryLimitMB, wasm }));
+/**
+ * `workers` threads (none for 1), each ready (its surface and pipeline open) when this resolves. `input`:
+ * Core.stage1Input of the caller's mesh and options (horse: simplifying it took 0.9 s, which every thread
+ * spent again when each was sent the mesh as read).
+ */
+export function openNodePool(input: Stage1Input, options: Partial<Options>, settings: PoolSettings): Promise<NodePool> {
+  const { mesh, refine } = input;
+  return openPool(settings, (wasm) => ({ mesh: { positions: mesh.positions, triangles: mesh.triangles }, refine, options, memoryLimitMB: settings.memoryLimitMB, wasm }));
 }
 
 /** The same for a point cloud: each thread opens the cloud (with `options.neighbours`) and its pipeline. */

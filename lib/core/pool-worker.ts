@@ -4,7 +4,7 @@
 // sources' candidate records (their buffers transferred) or with an error of the core's kind.
 import { createCore } from './index.ts';
 import type { SeparatorWorker } from './pool.ts';
-import { CoreError, type CandidateRecord, type CloudArrays, type CloudOptions, type CoreErrorKind, type MeshArrays, type Options, type Pipeline } from './types.ts';
+import { CoreError, type CandidateRecord, type CloudArrays, type CloudOptions, type CoreErrorKind, type Options, type Pipeline, type Stage1Input } from './types.ts';
 
 /** `crash`: the WebAssembly instance aborted; the worker is gone. */
 export type PoolErrorKind = CoreErrorKind | 'crash';
@@ -19,16 +19,7 @@ interface PoolStartCommon {
 
 /** What a pool worker is started with: a mesh, or a point cloud, and the pipeline's options. */
 export type PoolStart = PoolStartCommon & (
-  | {
-    mesh: MeshArrays;
-    /**
-     * true: open the surface a RefinedSurface's pipeline on `mesh` runs stage 1 on (Core.openStage1Surface:
-     * refined when coarse, simplified when large; Node: the owner has the mesh as read); false: open it
-     * as given (the page: the geometry worker sends the mesh stage 1 runs on).
-     */
-    refine: boolean;
-    options: Partial<Options>;
-  }
+  | (Stage1Input & { options: Partial<Options> })
   | { cloud: CloudArrays; options: Partial<CloudOptions> }
 );
 

@@ -492,6 +492,17 @@ export interface Evaluation {
   timings: Record<string, number>;
 }
 
+/** The mesh a pool worker opens to compute stage 1's separators (Core.stage1Input). */
+export interface Stage1Input {
+  mesh: MeshArrays;
+  /**
+   * false: `mesh` is what stage 1 runs on, open it as given (a simplified copy; in the page, the mesh
+   * the geometry worker computes on); true: `mesh` is as given by the user, open it refined when coarse
+   * (Core.openStage1Surface).
+   */
+  refine: boolean;
+}
+
 export interface Core {
   /** Checks the arrays (throws CoreError on empty input, bad indices, NaN/Inf) and reports mesh facts. */
   inspect(mesh: MeshArrays): MeshFacts;
@@ -508,6 +519,11 @@ export interface Core {
    * separators on.
    */
   openStage1Surface(mesh: MeshArrays, options?: Partial<Options>): Surface;
+  /**
+   * What stage 1 of openRefinedSurface(mesh).pipeline(options) runs on, for a pool worker to open: a
+   * large mesh is simplified here, once (the caller's pipeline reuses the copy), not again in each worker.
+   */
+  stage1Input(mesh: MeshArrays, options?: Partial<Options>): Stage1Input;
   /**
    * Builds the per-cloud state (of a cloud that passed checkCloud, lib/io/cloud-check.ts); only the
    * cloud-only options matter to it. Throws CoreError when the cloud cannot be processed.

@@ -22,8 +22,8 @@ const made = new WeakMap<MeshArrays, Map<number, { mesh: MeshArrays; simplified:
 
 /**
  * The mesh stage 1 runs on for the option `stage1Vertices` and how it was made, or null when it is
- * `mesh` itself (`mesh` as given, its facts). Made once per mesh and limit (the caller's core and its
- * pool's threads ask for the same one); deterministic.
+ * `mesh` itself (`mesh` as given, its facts). Made once per mesh and limit (Core.stage1Input makes it
+ * for a pool's threads, and the caller's pipeline then takes the same copy); deterministic.
  */
 export function stage1Mesh(mesh: MeshArrays, facts: MeshFacts, stage1Vertices: number): { mesh: MeshArrays; simplified: Simplification } | null {
   const plan = simplificationOf(facts, stage1Vertices);

@@ -18,7 +18,7 @@ let core: Core;
 let pool: NodePool;
 beforeAll(async () => {
   core = await loadCoreNode();
-  pool = await openNodePool(MESH, OPTIONS, { workers: 2 });
+  pool = await openNodePool(core.stage1Input(MESH, OPTIONS), OPTIONS, { workers: 2 });
 }, 60_000);
 afterAll(() => pool?.close());
 

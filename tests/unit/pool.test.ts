@@ -18,7 +18,7 @@ let core: Core;
 let pool: NodePool;
 beforeAll(async () => {
   core = await loadCoreNode();
-  pool = await openNodePool(MESH, OPTIONS, { workers: 3 });
+  pool = await openNodePool(core.stage1Input(MESH, OPTIONS), OPTIONS, { workers: 3 });
 }, 60_000);
 afterAll(() => pool?.close());
 
@@ -61,7 +61,7 @@ describe('stage 1 on a pool of worker threads', () => {
   }, 120_000);
 
   it('goes on without a thread that stops mid-run', async () => {
-    const spare = await openNodePool(MESH, OPTIONS, { workers: 2 });
+    const spare = await openNodePool(core.stage1Input(MESH, OPTIONS), OPTIONS, { workers: 2 });
     const lost: unknown[] = [];
     let rounds = 0;
     const skeleton = await skeletonWith(spare.workers, {

@@ -6,10 +6,10 @@
 // stage 1 as each measures it (the page: the sum of the worker's `pipeline.step` calls, without
 // messages or drawing; Node: from the first step to the last), the ratio of their medians and whether
 // both drew the same number of sources, as a table in bench/results/<date>-page.md. With --workers K
-// (and --round-size R, 8 by default: at 1 a round has nothing to share) both run stage 1 on K threads:
+// (and --draw-ahead R, the default by default: at 1 there is nothing to share) both run stage 1 on K threads:
 // the page's workers setting, in its address, and the Node runner's pool.
 //
-//   node --import tsx bench/page.ts [--repeats 3] [--port 4180] [--no-build] [--workers K] [--round-size R] [meshes...]
+//   node --import tsx bench/page.ts [--repeats 3] [--port 4180] [--no-build] [--workers K] [--draw-ahead R] [meshes...]
 import { spawn, spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, writeFileSync, existsSync } from 'node:fs';
 import os from 'node:os';
@@ -30,15 +30,15 @@ const { positionals, values } = parseArgs({
     port: { type: 'string', default: '4180' },
     'no-build': { type: 'boolean', default: false },
     workers: { type: 'string', default: '1' },
-    'round-size': { type: 'string', default: String(defaultOptions.roundSize) },
+    'draw-ahead': { type: 'string', default: String(defaultOptions.drawAhead) },
   },
 });
 const repeats = Number(values.repeats), port = Number(values.port);
 const workers = parseSettingText(WORKERS, values.workers);
-const roundSize = Number(values['round-size']);
-if (typeof workers !== 'number' || optionProblem(OPTIONS.find((o) => o.key === 'roundSize')!, roundSize)) throw new Error('--workers and --round-size take whole numbers from 1 to 256');
+const drawAhead = Number(values['draw-ahead']);
+if (typeof workers !== 'number' || optionProblem(OPTIONS.find((o) => o.key === 'drawAhead')!, drawAhead)) throw new Error('--workers and --draw-ahead take whole numbers from 1 to 256');
 /** The run's settings in the page's address (web/src/ui/url-state.ts). */
-const pageHash = `#workers=${workers}&roundSize=${roundSize}`;
+const pageHash = `#workers=${workers}&drawAhead=${drawAhead}`;
 const DEFAULT_MESHES = ['bob', 'fertility_9k', 'hand', 'armadillo', 'horse'];
 const folders = ['meshes', 'synthetic'].map((f) => path.resolve(repoRoot, '..', 'shared', 'data', f));
 const all = folders.flatMap((d) => readdirSync(d).filter((f) => f.endsWith('.ply')).map((f) => path.join(d, f)));
@@ -53,7 +53,7 @@ const loadBefore = os.loadavg();
 
 function node(file: string): { stage1Ms: number; sources: number } {
   const out = path.join(tmp, `${path.basename(file)}.json`);
-  const args = ['--workers', String(workers), '--round-size', String(roundSize)];
+  const args = ['--workers', String(workers), '--draw-ahead', String(drawAhead)];
   const result = spawnSync(process.execPath, ['--import', 'tsx', 'bench/runners/cscd.ts', file, out, ...args], { cwd: repoRoot, encoding: 'utf8' });
   if (result.status !== 0) throw new Error(`${path.basename(file)} in Node: ${result.stderr.trim().split('\n').pop()}`);
   const { stage1Seconds } = JSON.parse(result.stdout.trim().split('\n').pop()!) as { stage1Seconds: number };
@@ -98,7 +98,7 @@ try {
         await page.locator('body[data-sk-run="done"]').waitFor({ timeout: 600_000 });
         const run = await page.evaluate(() => window.cscd!.skeletonRun());
         if (!run) throw new Error(`${row.mesh}: the page shows no skeleton`);
-        if (run.workers !== Math.min(workers, roundSize)) throw new Error(`${row.mesh}: the page ran stage 1 on ${run.workers} workers, not ${workers}`);
+        if (run.workers !== Math.min(workers, drawAhead)) throw new Error(`${row.mesh}: the page ran stage 1 on ${run.workers} workers, not ${workers}`);
         row.page.push(run.stage1Ms);
         row.pageSources = run.sources;
         await page.close();
@@ -126,7 +126,7 @@ const lines = [
     + `Machine: ${os.cpus().length} cores (${os.cpus()[0]?.model.trim()}), Node ${process.version}, ${chromiumVersion} (headless, --disable-gpu); `
     + `load average ${loadBefore.map((x) => x.toFixed(2)).join(' ')} at the start.`,
   '',
-  `\`node --import tsx bench/page.ts${process.argv.slice(2).length ? ` ${process.argv.slice(2).join(' ')}` : ''}\`: default options (auto N, seed 1) but roundSize ${roundSize}, stage 1 on ${workers} thread${workers === 1 ? '' : 's'}, `
+  `\`node --import tsx bench/page.ts${process.argv.slice(2).length ? ` ${process.argv.slice(2).join(' ')}` : ''}\`: default options (auto N, seed 1) but drawAhead ${drawAhead}, stage 1 on ${workers} thread${workers === 1 ? '' : 's'}, `
     + `${repeats} runs each, page and Node alternating; the page a fresh tab each run (its worker loads and compiles the core), Node a fresh process. `
     + `Stage 1: the page's worker sums its \`pipeline.step\` calls (no messages, no drawing), or on a pool times \`runStage1\` as Node's runner does.`,
   '',

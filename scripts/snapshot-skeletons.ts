@@ -24,7 +24,7 @@ const { positionals, values } = parseArgs({
   allowPositionals: true,
   options: { n: { type: 'string', default: '40' }, set: { type: 'string', multiple: true, default: [] } },
 });
-/** --set roundSize=1 and the like: any option of a mesh. */
+/** --set drawAhead=1 and the like: any option of a mesh. */
 const overrides = optionsFromPairs(values.set, MESH_OPTIONS) as Partial<Options>;
 const [command, ...rest] = positionals;
 

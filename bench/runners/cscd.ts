@@ -2,10 +2,10 @@
 // calls as `cscd skeleton` (cli/commands/skeleton.ts), in a process of its own so that it is timed and
 // pinned like the baselines.
 //
-//   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --round-size R]
+//   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R]
 //
 // Writes the skeleton as our JSON and prints, as the last line of stdout, {"seconds": S, "stage1Seconds": T,
-// "serialSeconds": D, "memoryMB": M} (D: on a pool, this thread's drawing and accepting of rounds; M: this
+// "serialSeconds": D, "memoryMB": M} (D: on a pool, this thread's drawing and accepting; M: this
 // thread's core at the end, its peak; it held every candidate and ran stage 2, so no pool thread's core
 // needs more):
 // the wall time of openRefinedSurface (refining a coarse mesh, as the CLI does, and the per-mesh geodesic
@@ -23,13 +23,13 @@ import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
 
 const { positionals, values } = parseArgs({
   allowPositionals: true,
-  options: { workers: { type: 'string', default: '1' }, 'round-size': { type: 'string', default: String(defaultOptions.roundSize) } },
+  options: { workers: { type: 'string', default: '1' }, 'draw-ahead': { type: 'string', default: String(defaultOptions.drawAhead) } },
 });
 const [meshPath, outPath] = positionals;
 const workers = Number(values.workers);
-const options = { ...defaultOptions, roundSize: Number(values['round-size']) };
-if (!meshPath || !outPath || !(workers >= 1) || !(options.roundSize >= 1)) {
-  process.stderr.write('usage: node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --round-size R]\n');
+const options = { ...defaultOptions, drawAhead: Number(values['draw-ahead']) };
+if (!meshPath || !outPath || !(workers >= 1) || !(options.drawAhead >= 1)) {
+  process.stderr.write('usage: node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R]\n');
   process.exit(2);
 }
 
@@ -43,7 +43,7 @@ const surface = core.openRefinedSurface(mesh);
 const pool = await opening;
 let skeleton;
 let stage1Seconds = 0;
-/** On a pool: the time this thread spent drawing and accepting rounds, while the workers waited (Amdahl's serial part). */
+/** On a pool: the time this thread spent drawing and accepting, beside the workers (serial only while they wait for it). */
 let serialSeconds = 0;
 const timed = <T extends object>(target: T, names: readonly string[]): T =>
   new Proxy(target, {
@@ -66,7 +66,7 @@ try {
   const pipeline = surface.pipeline(options);
   try {
     const stage1 = performance.now();
-    await runStage1(threads.length ? timed(pipeline, ['drawRound', 'accept']) : pipeline, threads);
+    await runStage1(threads.length ? timed(pipeline, ['draw', 'accept']) : pipeline, threads);
     stage1Seconds = (performance.now() - stage1) / 1000;
     skeleton = pipeline.finish();
   } finally {

@@ -24,7 +24,7 @@ function threadsFor(settings: RunSettings, options: ShapeOptions, vertices: numb
     cores: os.availableParallelism(),
     memoryGB: os.totalmem() / 2 ** 30,
     vertices,
-    roundSize: options.roundSize,
+    drawAhead: options.drawAhead,
     sourcesLeft: options.n === 'auto' ? AUTO_N.max : options.n,
   }).workers;
 }

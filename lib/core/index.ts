@@ -113,8 +113,8 @@ class WasmPipeline extends Owner<PipelineHandle> implements Pipeline {
     return this.unwrap(this.live().step(sources)) as PipelineProgress;
   }
 
-  drawRound(): Uint32Array {
-    return this.unwrap(this.live().drawRound());
+  draw(): Uint32Array {
+    return this.unwrap(this.live().draw());
   }
 
   separators(sources: Uint32Array): CandidateRecord[] {
@@ -194,8 +194,8 @@ class RefinedPipeline implements Pipeline {
     return this.inner.step(sources);
   }
 
-  drawRound(): Uint32Array {
-    return this.inner.drawRound();
+  draw(): Uint32Array {
+    return this.inner.draw();
   }
 
   separators(sources: Uint32Array): CandidateRecord[] {

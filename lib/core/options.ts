@@ -49,7 +49,7 @@ interface MeshOnly {
 export type OptionSpec =
   | (Common<'target'> & EveryShape & { kind: 'choice'; /** each value with its label in the panel */ choices: Readonly<Record<Options['target'], string>> })
   | (Common<'sphere'> & EveryShape & { kind: 'switch' })
-  | (Common<'seed' | 'pruneDepth' | 'roundSize'> & EveryShape & { kind: 'integer'; range: readonly [number, number]; placeholder: string })
+  | (Common<'seed' | 'pruneDepth' | 'drawAhead'> & EveryShape & { kind: 'integer'; range: readonly [number, number]; placeholder: string })
   | (Common<'angleThreshold' | 'laplacianThreshold' | 'pruneLengthFactor'> & EveryShape & {
       kind: 'number';
       range: readonly [number, number];
@@ -103,8 +103,8 @@ export const OPTIONS: readonly OptionSpec[] = Object.freeze([
     help: 'loops shorter than this many mean edge lengths enclose no feature and are pruned (paper Sec. 4.2.2)',
   },
   {
-    key: 'roundSize', flag: 'round-size', shapes: 'all', stage: 'skeleton', commands: 'skeleton', kind: 'integer', default: 8, range: [1, 256], placeholder: 'K',
-    help: 'sources drawn at once in stage 1, their separators computed together (in parallel by workers): the skeleton depends on it, not on the number of workers',
+    key: 'drawAhead', flag: 'draw-ahead', shapes: 'all', stage: 'skeleton', commands: 'skeleton', kind: 'integer', default: 4, range: [1, 256], placeholder: 'K',
+    help: 'sources drawn in stage 1 before the separators of the earlier ones are known (each draw knows all but the K − 1 before it); up to K are computed side by side by workers: the skeleton depends on it, not on the number of workers; 1: one at a time',
   },
   {
     key: 'stage1Vertices', flag: 'stage1-vertices', shapes: 'mesh', stage: 'skeleton', commands: 'skeleton', kind: 'integer', default: 20000,
@@ -145,7 +145,7 @@ export interface SettingSpec {
 
 export const WORKERS: SettingSpec = Object.freeze({
   key: 'workers', flag: 'workers', kind: 'count', default: 'auto', range: Object.freeze([1, 256] as const), placeholder: 'K|auto',
-  help: 'threads that compute stage 1 (with more than 1, the pipeline\'s own thread only draws the sources and takes the results); they share each round of roundSize sources, so with roundSize 1 there is nothing to share; auto: every core but one, fewer when memory is short (docs/parallel.md); the skeleton does not depend on it',
+  help: 'threads that compute stage 1 (with more than 1, the pipeline\'s own thread only draws the sources and takes the results); they share the drawAhead sources drawn ahead, so with drawAhead 1 there is nothing to share; auto: every core but one, fewer when memory is short (docs/parallel.md); the skeleton does not depend on it',
 });
 
 export const SETTINGS: readonly SettingSpec[] = Object.freeze([WORKERS]);

@@ -32,7 +32,7 @@ export interface PoolSizeInput {
   memoryGB: number | null;
   /** Vertices of the mesh computed on. */
   vertices: number;
-  roundSize: number;
+  drawAhead: number;
   /** Sources stage 1 may still draw (n, or the auto mode's most). */
   sourcesLeft: number;
 }
@@ -45,12 +45,12 @@ export interface PoolSize {
 }
 
 /**
- * auto: min(cores − 1, what a quarter of the memory (2 GB when unknown) holds, roundSize, sources left), at least 1.
+ * auto: min(cores − 1, what a quarter of the memory (2 GB when unknown) holds, drawAhead, sources left), at least 1.
  * A pool of K holds K + 1 cores (the caller's too), so memory allows K when K + 1 cores fit.
- * A number is taken as asked, except that more threads than a round has sources would idle.
+ * A number is taken as asked, except that more threads than sources drawn ahead would idle.
  */
 export function poolSize(input: PoolSizeInput): PoolSize {
-  const useful = Math.max(1, Math.min(input.roundSize, input.sourcesLeft));
+  const useful = Math.max(1, Math.min(input.drawAhead, input.sourcesLeft));
   if (input.workers !== 'auto') return { workers: Math.min(input.workers, useful), memoryCapped: false };
   const byCores = Math.max(1, input.cores - 1);
   const budgetMB = input.memoryGB ? (input.memoryGB * 1024) / 4 : FALLBACK_BUDGET_MB;

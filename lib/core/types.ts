@@ -108,8 +108,8 @@ export interface Options {
   n: number | 'auto';
   /** Prune: loops shorter than this many mean edge lengths enclose no feature (paper Sec. 4.2.2). */
   pruneLengthFactor: number;
-  /** Sources drawn at once in stage 1; their separators are computed together (by a pool of workers). */
-  roundSize: number;
+  /** Sources drawn ahead of their separators in stage 1 (up to this many computed side by side, by a pool of workers); 1: one at a time. */
+  drawAhead: number;
   /** Meshes only: above this many vertices stage 1 runs on a copy simplified to about as many (lib/mesh/simplify.ts); 0: never. */
   stage1Vertices: number;
 }
@@ -302,17 +302,18 @@ export interface CandidateRecord {
 /**
  * The whole CSCD-M pipeline as a resumable job: `step` runs a few sources of stage 1 (so callers can
  * report progress and cancel between steps), `finish` runs stage 2 and returns the skeleton.
- * Stage 1 goes in rounds of `roundSize` sources; a pool of workers runs a round as `drawRound` here,
- * `separators` of its sources on pipelines of the same mesh and options anywhere, then `accept` here
- * of all of them in the round's order: the same skeleton as `step`, whatever the number of workers.
+ * Stage 1 draws `drawAhead` sources ahead of the candidates it has taken; a pool of workers runs it as
+ * `draw` here, `separators` of the drawn sources on pipelines of the same mesh and options anywhere,
+ * then `accept` here of their candidates in draw order (and `draw` again): the same skeleton as
+ * `step`, whatever the number of workers.
  */
 export interface Pipeline {
   step(sources: number): PipelineProgress;
-  /** The next round's sources (empty once stage 1 is done); the same until `accept` takes the round. */
-  drawRound(): Uint32Array;
-  /** Stage 1 from these sources, drawing and keeping nothing (a pool worker's share of a round). */
+  /** The sources drawn since the last call (as many as `accept` took candidates since; none once stage 1 is done). */
+  draw(): Uint32Array;
+  /** Stage 1 from these sources, drawing and keeping nothing (a pool worker's share). */
   separators(sources: Uint32Array): CandidateRecord[];
-  /** The candidates of the drawn round, in its order. */
+  /** The candidates of the oldest sources drawn and not taken yet, in draw order (any number of them). */
   accept(records: CandidateRecord[]): PipelineProgress;
   finish(): Skeleton;
   dispose(): void;

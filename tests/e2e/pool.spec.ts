@@ -2,12 +2,12 @@
  * Stage 1 on the page's pool of separator workers (web/src/worker/page-pool.ts): the skeleton JSON
  * does not depend on the `workers` setting, a cancel stops every worker and a later run works, and a
  * separator worker that crashes is reported while the run finishes on the others, with the same
- * skeleton. On Spot (the page's sample, 2930 vertices), n = 12 in rounds of 4, seed 7.
+ * skeleton. On Spot (the page's sample, 2930 vertices), n = 12, 4 drawn ahead, seed 7.
  */
 import { expect, test, type Page } from '@playwright/test';
 import { body, comparable, downloadSkeletonJson, enterStage, openPage, setCheck, setNumber, waitForState } from './studio.ts';
 
-const RUN = 'n=12&roundSize=4&seed=7';
+const RUN = 'n=12&drawAhead=4&seed=7';
 
 /** The run shown: its sources and the threads stage 1 started on. */
 const shownRun = (page: Page) => page.evaluate(() => window.cscd!.skeletonRun());
@@ -34,7 +34,7 @@ test('the saved skeleton is the same, byte for byte, on 1, 2 and 3 workers', asy
   expect(await shownRun(page)).toMatchObject({ sources: 12, workers: 1 });
   await enterStage(page, 'skeleton');
   const alone = await savedJson(page);
-  expect(JSON.parse(alone)).toMatchObject({ options: { n: 12, roundSize: 4, seed: 7 } });
+  expect(JSON.parse(alone)).toMatchObject({ options: { n: 12, drawAhead: 4, seed: 7 } });
   expect(alone).not.toMatch(/workers/);
   await expect(page.getByTestId('opt-workers')).toHaveAttribute('title', /Threads that compute stage 1.*the skeleton does not depend on it/);
 
@@ -49,7 +49,7 @@ test('the saved skeleton is the same, byte for byte, on 1, 2 and 3 workers', asy
 
 test('a cancel during stage 1 stops every worker; the next run finishes on a new pool', async ({ page }) => {
   test.slow();
-  await openPage(page, '/#n=3000&roundSize=4&workers=2');
+  await openPage(page, '/#n=3000&drawAhead=4&workers=2');
   const started: { script: string; closed: boolean }[] = [];
   page.on('worker', (worker) => {
     const seen = { script: /assets\/([a-z-]+)-/.exec(worker.url())?.[1] ?? worker.url(), closed: false };

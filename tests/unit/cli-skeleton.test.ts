@@ -158,16 +158,16 @@ describe('cscd skeleton', () => {
 
 // These stop before the core is loaded.
 describe('cscd skeleton usage', () => {
-  it('gives the same JSON on 1 and 2 threads (--workers) for rounds of --round-size sources', async () => {
+  it('gives the same JSON on 1 and 2 threads (--workers) with --draw-ahead sources drawn ahead', async () => {
     const runs = [];
-    for (const workers of ['1', '2']) runs.push(await cscd('skeleton', twoTorus, '--n', '8', '--round-size', '4', '--workers', workers));
+    for (const workers of ['1', '2']) runs.push(await cscd('skeleton', twoTorus, '--n', '8', '--draw-ahead', '4', '--workers', workers));
     expect(runs.map((r) => r.status)).toEqual([0, 0]);
     expect(withoutTimings(runs[1].stdout)).toBe(withoutTimings(runs[0].stdout));
-    expect((JSON.parse(runs[0].stdout) as SkeletonJson).options.roundSize).toBe(4);
+    expect((JSON.parse(runs[0].stdout) as SkeletonJson).options.drawAhead).toBe(4);
   }, 120_000);
 
   it('reports a mesh the core refuses once, with its threads closed, when --workers starts a pool', async () => {
-    const result = await cscd('skeleton', fixture('bad', 'moebius.obj'), '--n', '8', '--round-size', '4', '--workers', '2');
+    const result = await cscd('skeleton', fixture('bad', 'moebius.obj'), '--n', '8', '--draw-ahead', '4', '--workers', '2');
     expect(result).toEqual({ status: 1, stdout: '', stderr: expect.stringMatching(/^cscd: the mesh is not a manifold surface: faces are not consistently oriented[^\n]*\n$/) });
   }, 120_000);
 

@@ -167,7 +167,7 @@ describe('the core’s records', () => {
 
   it('a pipeline’s step returns PipelineProgress and finish a Skeleton', () => {
     const surface = core.openSurface(TORUS);
-    const pipeline = surface.pipeline({ n: 6, roundSize: 3 });
+    const pipeline = surface.pipeline({ n: 6, drawAhead: 3 });
     try {
       const progress = pipeline.step(3);
       expect(keeps(progress, PROGRESS)).toEqual([]);

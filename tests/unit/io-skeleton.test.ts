@@ -38,7 +38,7 @@ function triangleWithTail(): Skeleton {
 // Built in another key order than defaultOptions: the writers print them in a fixed order.
 const options: Options = { ...defaultOptions, n: 3, seed: 7, target: 'geodesic' };
 const meta = { mesh: 'meshes/tri.ply', options: Object.fromEntries(Object.entries(options).reverse()) as unknown as Options };
-const OPTIONS_JSON = '{"target":"geodesic","sphere":true,"seed":7,"angleThreshold":1.75,"laplacianThreshold":0.2,"pruneDepth":3,"n":3,"pruneLengthFactor":3,"roundSize":8,"stage1Vertices":20000}';
+const OPTIONS_JSON = '{"target":"geodesic","sphere":true,"seed":7,"angleThreshold":1.75,"laplacianThreshold":0.2,"pruneDepth":3,"n":3,"pruneLengthFactor":3,"drawAhead":4,"stage1Vertices":20000}';
 const SUMMARY = '4 nodes, 4 edges, 1 independent cycles; 3 sources, 3 candidates, 2 packed';
 
 describe('skeleton writers', () => {

@@ -12,7 +12,7 @@ import { sharedMesh } from '../paths.ts';
 import { readMesh } from './support/meshes.ts';
 
 const MESH: MeshArrays = readMesh(sharedMesh('fertility_9k.ply')); // 4494 vertices, genus 4
-const OPTIONS: Options = { ...defaultOptions, n: 40, roundSize: 4, seed: 3, stage1Vertices: 2500 };
+const OPTIONS: Options = { ...defaultOptions, n: 40, drawAhead: 4, seed: 3, stage1Vertices: 2500 };
 
 let core: Core;
 let pool: NodePool;

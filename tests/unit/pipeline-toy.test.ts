@@ -142,15 +142,15 @@ describe('the generic pipeline on a toy realization', () => {
     }
   });
 
-  it('reports stage 1 source by source and its loops by whole rounds, and gives the same skeleton whatever the steps', () => {
-    const { progress, skeleton } = run('star', { n: 20, seed: 4, roundSize: 4 }, [5, 6, 10]);
+  it('reports stage 1 and its loops source by source, and gives the same skeleton whatever the steps', () => {
+    const { progress, skeleton } = run('star', { n: 20, seed: 4, drawAhead: 4 }, [5, 6, 10]);
     expect(progress.map((p) => [p.done, p.total, p.finished])).toEqual([[5, 20, false], [11, 20, false], [20, 20, true]]);
-    expect(progress.map((p) => p.newLoops.length)).toEqual([4, 4, 12]);
+    expect(progress.map((p) => p.newLoops.length)).toEqual([5, 6, 9]);
     expect(progress.flatMap((p) => p.newLoops.map((l) => l.length))).toEqual(skeleton.candidates.loops.map((l) => l.length));
-    const whole = run('star', { n: 20, seed: 4, roundSize: 4 }).skeleton;
+    const whole = run('star', { n: 20, seed: 4, drawAhead: 4 }).skeleton;
     skeleton.stats.timings = whole.stats.timings = {};
     expect(skeleton).toEqual(whole);
-    const auto = run('star', { seed: 4, roundSize: 3 }, [3]).progress[0];
+    const auto = run('star', { seed: 4, drawAhead: 3 }, [3]).progress[0];
     expect([auto.done, auto.total]).toEqual([3, AUTO_N.max]);
   });
 

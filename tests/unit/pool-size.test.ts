@@ -4,7 +4,7 @@
 import { describe, expect, it } from 'vitest';
 import { coreMemoryMB, poolSize, type PoolSizeInput } from '../../lib/core/pool-size.ts';
 
-const base: PoolSizeInput = { workers: 'auto', cores: 8, memoryGB: 8, vertices: 20_000, roundSize: 8, sourcesLeft: 400 };
+const base: PoolSizeInput = { workers: 'auto', cores: 8, memoryGB: 8, vertices: 20_000, drawAhead: 8, sourcesLeft: 400 };
 
 describe('coreMemoryMB', () => {
   it('grows with the mesh from the core initial 64 MB, as measured (docs/parallel.md)', () => {
@@ -22,8 +22,8 @@ describe('poolSize', () => {
   });
 
   it('auto: no more than a round has sources, nor than are left', () => {
-    expect(poolSize({ ...base, roundSize: 1 })).toEqual({ workers: 1, memoryCapped: false });
-    expect(poolSize({ ...base, roundSize: 4 })).toEqual({ workers: 4, memoryCapped: false });
+    expect(poolSize({ ...base, drawAhead: 1 })).toEqual({ workers: 1, memoryCapped: false });
+    expect(poolSize({ ...base, drawAhead: 4 })).toEqual({ workers: 4, memoryCapped: false });
     expect(poolSize({ ...base, sourcesLeft: 3 })).toEqual({ workers: 3, memoryCapped: false });
   });
 
@@ -39,7 +39,7 @@ describe('poolSize', () => {
     // 32 GB and 100K vertices: 8192 MB hold 14 cores, cut by the cores to 7.
     expect(poolSize({ ...base, vertices: 100_000, memoryGB: 32 })).toEqual({ workers: 7, memoryCapped: false });
     // Capped by the round, not by memory: nothing to say about memory.
-    expect(poolSize({ ...base, vertices: 200_000, memoryGB: 32, roundSize: 2 })).toEqual({ workers: 2, memoryCapped: false });
+    expect(poolSize({ ...base, vertices: 200_000, memoryGB: 32, drawAhead: 2 })).toEqual({ workers: 2, memoryCapped: false });
   });
 
   it('a number: as asked, but no more than the round has sources', () => {

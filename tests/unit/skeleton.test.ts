@@ -115,9 +115,9 @@ describe('skeleton shape and bookkeeping', () => {
     expect(skeleton.candidates.fates.filter((f) => f === 'packed').length).toBe(skeleton.packed.length);
   });
 
-  it('runs as a resumable job with progress, whole rounds at a time', () => {
+  it('runs as a resumable job with progress, source by source', () => {
     const surface = core.openSurface(readMesh(sharedMesh('two_torus.ply')));
-    const pipeline = surface.pipeline({ n: 12, roundSize: 5 });
+    const pipeline = surface.pipeline({ n: 12, drawAhead: 5 });
     const seen: number[] = [];
     let progress;
     do {

@@ -7,13 +7,13 @@ import { readUrl } from '../../web/src/ui/url-state.ts';
 describe('readUrl', () => {
   it('reads the sample, stage, source, every option and the run settings', () => {
     const state = readUrl(
-      '#mesh=bob&stage=skeleton&source=812&target=geodesic&sphere=false&seed=7&angleThreshold=1.5&laplacianThreshold=0.4&pruneDepth=5&n=40&pruneLengthFactor=2.5&roundSize=4&stage1Vertices=30000&workers=3',
+      '#mesh=bob&stage=skeleton&source=812&target=geodesic&sphere=false&seed=7&angleThreshold=1.5&laplacianThreshold=0.4&pruneDepth=5&n=40&pruneLengthFactor=2.5&drawAhead=4&stage1Vertices=30000&workers=3',
     );
     expect(state).toEqual({
       mesh: 'bob',
       stage: 'skeleton',
       source: 812,
-      options: { target: 'geodesic', sphere: false, seed: 7, angleThreshold: 1.5, laplacianThreshold: 0.4, pruneDepth: 5, n: 40, pruneLengthFactor: 2.5, roundSize: 4, stage1Vertices: 30000 },
+      options: { target: 'geodesic', sphere: false, seed: 7, angleThreshold: 1.5, laplacianThreshold: 0.4, pruneDepth: 5, n: 40, pruneLengthFactor: 2.5, drawAhead: 4, stage1Vertices: 30000 },
       settings: { workers: 3 },
     });
     expect(readUrl('#n=auto').options.n).toBe('auto');

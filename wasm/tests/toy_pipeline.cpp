@@ -135,7 +135,7 @@ public:
     return c;
   }
 
-  size_t nextSource(const std::vector<size_t>&) { return drawable[std::uniform_int_distribution<size_t>(0, drawable.size() - 1)(random)]; }
+  size_t nextSource() { return drawable[std::uniform_int_distribution<size_t>(0, drawable.size() - 1)(random)]; }
 
   void cover(const Candidate& c) {
     drawn.push_back(c.source);

@@ -43,7 +43,7 @@ const PROGRESS_REDRAW_MS = { gpu: 400, software: 1500 };
 
 /**
  * Least time between two updates of the progress bar, its text and the timeline while news arrives: a
- * pool sends news every round, some 20 a second on a small mesh, and on a software renderer each update
+ * pool sends news after every accept, some 20 to 50 a second on a small mesh, and on a software renderer each update
  * is a frame drawn on the workers' cores too.
  */
 const PROGRESS_TEXT_MS = { gpu: 100, software: 500 };

@@ -53,7 +53,7 @@ Options toOptions(const val& given) {
     }
   }
   options.pruneLengthFactor = number("pruneLengthFactor", options.pruneLengthFactor);
-  options.roundSize = int(number("roundSize", options.roundSize));
+  options.drawAhead = int(number("drawAhead", options.drawAhead));
   options.neighbours = int(number("neighbours", options.neighbours));
   options.stage1Vertices = int(number("stage1Vertices", options.stage1Vertices));
   return options;
@@ -70,7 +70,7 @@ val optionLimits() {
   defaults.set("pruneDepth", d.pruneDepth);
   defaults.set("n", d.n == 0 ? val("auto") : val(d.n));
   defaults.set("pruneLengthFactor", d.pruneLengthFactor);
-  defaults.set("roundSize", d.roundSize);
+  defaults.set("drawAhead", d.drawAhead);
   defaults.set("neighbours", d.neighbours);
   defaults.set("stage1Vertices", d.stage1Vertices);
   val ranges = val::object();

@@ -19,7 +19,7 @@ export interface SurfaceHandle {
 export interface PipelineHandle {
   error(): CoreFailure | null;
   step(sources: number): object | CoreFailure;
-  drawRound(): Uint32Array | CoreFailure;
+  draw(): Uint32Array | CoreFailure;
   separators(sources: Uint32Array): object[] | CoreFailure;
   accept(records: object[]): object | CoreFailure;
   finish(): object | CoreFailure;

@@ -3,8 +3,8 @@
 // The binding of Pipeline<Realization>, one template for every realization: a resumable job over a shape
 // (which must outlive it) whose step() streams the new candidates' loops and whose finish() returns the
 // skeleton record (lib/core/types.ts: Skeleton). For a pool of workers, each with its own module and
-// shape, one pipeline draws each round (drawRound), the others compute separators of its sources
-// (separators) and the first takes them back in order (accept); candidates cross as records
+// shape, one pipeline draws the sources (draw), the others compute their separators (separators) and
+// the first takes them back in draw order (accept); candidates cross as records
 // (CandidateRecord below, exact: the same bits whichever worker computed them). A realization's module
 // registers it with bindPipeline<Realization, ShapeBinding>("Pipeline"); ShapeBinding::shape() is the
 // realization's shape, or null when it could not be opened, and CandidateRecord<its Candidate> says how
@@ -142,11 +142,12 @@ public:
     return reportingErrors([&] { return progressRecord(pipeline->step(size_t(std::max(1.0, count)))); });
   }
 
-  // The next round's sources (empty once stage 1 is done); the same until accept() takes the round.
-  val drawRound() {
+  // The sources drawn since the last call (after accept() takes candidates, as many new ones; none once
+  // stage 1 is done).
+  val draw() {
     return reportingErrors([&] {
-      std::vector<size_t> round = pipeline->drawRound();
-      return toTypedArray("Uint32Array", std::vector<uint32_t>(round.begin(), round.end()));
+      std::vector<size_t> sources = pipeline->draw();
+      return toTypedArray("Uint32Array", std::vector<uint32_t>(sources.begin(), sources.end()));
     });
   }
 
@@ -160,13 +161,13 @@ public:
     });
   }
 
-  // The candidates of the round drawRound() gave, as records, in its order.
+  // The candidates of the oldest sources draw() gave and accept() did not take yet, as records, in draw order.
   val accept(const val& records) {
     return reportingErrors([&] {
-      std::vector<Candidate> round;
+      std::vector<Candidate> candidates;
       const size_t count = records["length"].as<size_t>();
-      for (size_t i = 0; i < count; i++) round.push_back(Record::read(records[i], *shape.shape()));
-      return progressRecord(pipeline->accept(std::move(round)));
+      for (size_t i = 0; i < count; i++) candidates.push_back(Record::read(records[i], *shape.shape()));
+      return progressRecord(pipeline->accept(std::move(candidates)));
     });
   }
 
@@ -187,8 +188,8 @@ private:
     }
   }
 
-  // Progress, with the loops taken since the last report (for display): those of accepted rounds
-  // only, since a round under way may still be cut short by the auto stop.
+  // Progress, with the loops taken since the last report (for display): those of accepted candidates
+  // only, since the auto stop may still drop a source drawn ahead.
   val progressRecord(const Progress& progress) {
     val newLoops = val::array();
     std::vector<uint8_t> newClosed;
@@ -229,7 +230,7 @@ void bindPipeline(const char* name) {
   if constexpr (multiscale) bound.template constructor<ShapeBinding&, const val&, ShapeBinding&>();
   bound.function("error", &Binding::error)
       .function("step", &Binding::step)
-      .function("drawRound", &Binding::drawRound)
+      .function("draw", &Binding::draw)
       .function("separators", &Binding::separators)
       .function("accept", &Binding::accept)
       .function("finish", &Binding::finish);

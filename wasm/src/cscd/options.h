@@ -20,10 +20,11 @@ struct Options {
   double laplacianThreshold = 0.2;           // cut locus: min -(mean edge length) x Laplacian of the distance
   int pruneDepth = 3;                        // cut locus: leaf branches shorter than this (edges) are pruned
   int n = 0;                                 // sources to sample; 0 = auto (until coverage stops growing)
-  // Sources drawn at once, their separators computed together (by a pool of workers): 8 lets eight
-  // cores share every round, and with stage 2 keeping leaves at the tips the skeletons are as good as
-  // one at a time (docs/parallel.md, "Choosing roundSize").
-  int roundSize = 8;
+  // Sources drawn ahead of their separators (each draw knows the separators of all but the
+  // drawAhead - 1 sources before it): up to this many are computed side by side, by a pool of workers.
+  // 4 keeps cycles and tips as one at a time does (8 did not), and two workers never wait
+  // (docs/parallel.md, "Choosing drawAhead"). 1: one at a time.
+  int drawAhead = 4;
   double pruneLengthFactor = 3;              // loops shorter than this many mean edge lengths are pruned
   // Point clouds only: neighbours of each point its local triangulation is built from (k of the kNN
   // search). 30 is geometry-central's default, which the paper's PotPourri3D point-cloud solver uses;
@@ -43,7 +44,7 @@ struct OptionRange {
 constexpr OptionRange kOptionRanges[] = {
     {"seed", 0, 4294967295.0},   {"angleThreshold", 0, M_PI}, {"laplacianThreshold", 0, 1e6},
     {"pruneDepth", 0, 1000},     {"n", 1, 100000},            {"pruneLengthFactor", 0, 1000},
-    {"roundSize", 1, 256},       {"neighbours", 3, 256},      {"stage1Vertices", 0, 100000000},
+    {"drawAhead", 1, 256},       {"neighbours", 3, 256},      {"stage1Vertices", 0, 100000000},
 };
 
 } // namespace cscd

@@ -5,10 +5,10 @@
 // cscd::Candidate with whatever the realization needs to remember of a separator (on a mesh, the loop's
 // surface points). The pipeline owns the candidates and hands them to the steps that need them:
 //   Candidate separator(size_t source)          stage 1 from one source (Alg. 2)
-//   size_t nextSource(const std::vector<size_t>& round)   adaptive sampling (Sec. 4.1.7), away from
-//                                               what is covered and from the round's earlier sources
+//   size_t nextSource()                         adaptive sampling (Sec. 4.1.7), away from what is covered
+//                                               and from the sources drawn and not covered yet
 //   void cover(Candidate& c)                    what the candidate's source and loop now cover (it may
-//                                               release what only covering needed)
+//                                               release what only covering needed); in draw order
 //   double coverage()                           share of the shape near what is covered
 //   double resolution()                         mean sample spacing (edge length)
 //   std::vector<std::vector<size_t>> overlaps(const Selection<Candidate>& kept)   overlap graph of kept
@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -95,7 +96,7 @@ struct IsRealization {
   using C = typename R::Candidate;
   static constexpr bool value =
       std::is_base_of_v<Candidate, C> && std::is_same_v<decltype(std::declval<R&>().separator(size_t())), C> &&
-      std::is_convertible_v<decltype(std::declval<R&>().nextSource(std::declval<const std::vector<size_t>&>())), size_t> &&
+      std::is_convertible_v<decltype(std::declval<R&>().nextSource()), size_t> &&
       std::is_void_v<decltype(std::declval<R&>().cover(std::declval<C&>()))> &&
       std::is_convertible_v<decltype(std::declval<R&>().coverage()), double> &&
       std::is_convertible_v<decltype(std::declval<R&>().resolution()), double> &&
@@ -123,51 +124,52 @@ public:
   // Every candidate of stage 1 so far, in draw order (stage 2 keeps them: its fates index them).
   const std::vector<Candidate>& candidates() const { return drawn; }
 
-  // Stage 1 in rounds: a round draws up to `roundSize` sources at once, from what the rounds before it
-  // covered, and then takes their candidates in draw order. The separators of a round do not depend on
-  // each other, so they may be computed anywhere and in any order (a worker pool: drawRound, then
-  // accept) and the skeleton stays the same; step() computes them here.
-  std::vector<size_t> drawRound() {
-    if (!round.empty() || done) return round;
-    if (drawn.empty()) stage1Start = std::chrono::steady_clock::now();
-    const size_t size = std::min<size_t>(options.roundSize, total() - drawn.size());
-    for (size_t k = 0; k < size; k++) round.push_back(realization.nextSource(round));
-    return round;
+  // Stage 1 with sources drawn ahead: the pipeline keeps `drawAhead` sources drawn whose candidates it
+  // has not taken yet, and draws the next one right after taking each candidate, so the draw of source i
+  // knows the candidates of sources 0 .. i - drawAhead and keeps away from the sources in between. Their
+  // separators do not depend on each other, so they may be computed anywhere and in any order (a worker
+  // pool: draw, then accept) and the skeleton stays the same; step() computes them here.
+
+  // The sources drawn since the last call, in draw order (none once stage 1 is done).
+  std::vector<size_t> draw() {
+    if (drawn.empty() && pending.empty()) stage1Start = std::chrono::steady_clock::now();
+    fillWindow();
+    return std::exchange(fresh, {});
   }
 
-  // The candidates of the round drawRound() gave, in its order. In auto mode the stop rule is applied
-  // after each one, so a round may end stage 1 part way (its later candidates are dropped).
+  // The candidates of the oldest sources drawn and not taken yet, as many as given, in draw order. In auto
+  // mode the stop rule is applied after each one, so stage 1 may end before the last (the later
+  // candidates and the sources still drawn ahead are dropped).
   Progress accept(std::vector<Candidate> candidates) {
-    if (candidates.size() != round.size()) throw std::logic_error("a round's candidates must match its sources");
-    if (!computed.empty()) throw std::logic_error("a round that step() began is ended by step()");
+    if (candidates.size() > pending.size()) throw std::logic_error("more candidates than sources drawn");
     for (size_t k = 0; k < candidates.size() && !done; k++) {
-      if (candidates[k].source != round[k]) throw std::logic_error("a round's candidates must come in its order");
+      if (candidates[k].source != pending.front()) throw std::logic_error("candidates must come in draw order");
+      pending.pop_front();
       drawn.push_back(std::move(candidates[k]));
       realization.cover(drawn.back());
       coverageHistory.push_back(realization.coverage());
       done = options.n > 0 ? drawn.size() >= size_t(options.n) : autoSaturated();
+      fillWindow();
     }
-    round.clear();
-    if (done) stage1Ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stage1Start).count();
+    if (done) {
+      pending.clear();
+      fresh.clear();
+      stage1Ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - stage1Start).count();
+    }
     return progress();
   }
 
-  // Stage 1 here, `count` more sources (or until stage 1 is done), one at a time: a round is accepted
-  // when its last source is computed, so a caller can look for a cancel after every source.
+  // Stage 1 here, `count` more sources (or until stage 1 is done), one at a time.
   Progress step(size_t count) {
     for (size_t k = 0; k < count && !done; k++) {
-      const std::vector<size_t> sources = drawRound();
-      computed.push_back(realization.separator(sources[computed.size()]));
-      if (computed.size() == sources.size()) accept(std::exchange(computed, {}));
+      draw();
+      accept({realization.separator(pending.front())});
     }
     return progress();
   }
 
-  // Sources done: accepted, and computed in the round under way.
-  Progress progress() const {
-    const size_t sources = drawn.size() + computed.size();
-    return {sources, done ? sources : total(), done};
-  }
+  // Sources done: their candidates taken.
+  Progress progress() const { return {drawn.size(), done ? drawn.size() : total(), done}; }
 
   // Stage 2 (after the remaining sources of stage 1): prune, pack, regions, graph, clique to star.
   Skeleton finish() {
@@ -229,6 +231,14 @@ private:
     return selection;
   }
 
+  // Draws until drawAhead sources are pending (or every source of stage 1 is drawn).
+  void fillWindow() {
+    while (!done && pending.size() < size_t(options.drawAhead) && drawn.size() + pending.size() < total()) {
+      pending.push_back(realization.nextSource());
+      fresh.push_back(pending.back());
+    }
+  }
+
   size_t total() const { return options.n > 0 ? size_t(options.n) : kMaxAutoSources; }
 
   bool autoSaturated() const {
@@ -240,8 +250,8 @@ private:
   Realization& realization;
   Options options;
   std::vector<Candidate> drawn;
-  std::vector<size_t> round; // sources drawn, candidates not yet accepted
-  std::vector<Candidate> computed; // by step(): the round's first candidates
+  std::deque<size_t> pending; // sources drawn, their candidates not taken yet
+  std::vector<size_t> fresh;  // sources drawn since draw() last gave them
   std::vector<double> coverageHistory;
   std::chrono::steady_clock::time_point stage1Start; // the first draw
   double stage1Ms = 0;                               // from the first draw to the last candidate taken, wherever computed

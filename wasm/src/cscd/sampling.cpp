@@ -9,39 +9,55 @@ namespace cscd {
 
 SourceSampler::SourceSampler(std::vector<Vector3> positions, std::vector<double> areas, double diagonal, uint32_t seed)
     : position(std::move(positions)), area(std::move(areas)), rng(seed), distance(area.size(), INFINITY),
-      scale(diagonal / 10) {
+      nearUncovered(area.size(), INFINITY), nearestUncovered(area.size()), scale(diagonal / 10) {
   for (double a : area) totalArea += a;
 }
 
-size_t SourceSampler::next(const std::vector<size_t>& round) {
-  if (round.empty()) {
-    roundSeen = 0;
-  } else {
-    if (roundSeen == 0) nearRound = distance;
-    for (; roundSeen < round.size(); roundSeen++) {
-      const Vector3 p = position[round[roundSeen]];
-      for (size_t v = 0; v < area.size(); v++) nearRound[v] = std::min(nearRound[v], norm(position[v] - p));
-    }
-  }
-  const std::vector<double>& away = round.empty() ? distance : nearRound;
+size_t SourceSampler::next() {
   // Unreached vertices (nothing sampled yet in their component) get the largest finite weight.
   constexpr double kMaxExponent = 50;
   std::vector<double> cumulative(area.size());
   double sum = 0;
-  bool anyCovered = std::any_of(away.begin(), away.end(), [](double d) { return std::isfinite(d); });
+  bool anyCovered = !uncovered.empty() || std::any_of(distance.begin(), distance.end(), [](double d) { return std::isfinite(d); });
   for (size_t v = 0; v < area.size(); v++) {
+    const double away = std::min(distance[v], nearUncovered[v]);
     double weight = area[v];
-    if (anyCovered) weight *= std::expm1(std::isfinite(away[v]) ? std::min(away[v] / scale, kMaxExponent) : kMaxExponent);
+    if (anyCovered) weight *= std::expm1(std::isfinite(away) ? std::min(away / scale, kMaxExponent) : kMaxExponent);
     cumulative[v] = sum += weight;
   }
   // 53 random bits make a uniform double in [0, 1) the same way on every platform.
   double u = double((uint64_t(rng()) << 21) ^ uint64_t(rng() >> 11)) / 9007199254740992.0;
-  size_t v = size_t(std::upper_bound(cumulative.begin(), cumulative.end(), u * sum) - cumulative.begin());
-  return std::min(v, area.size() - 1);
+  size_t source = size_t(std::upper_bound(cumulative.begin(), cumulative.end(), u * sum) - cumulative.begin());
+  source = std::min(source, area.size() - 1);
+
+  const size_t serial = firstUncovered + uncovered.size();
+  uncovered.push_back(source);
+  for (size_t v = 0; v < area.size(); v++) {
+    const double d = norm(position[v] - position[source]);
+    if (d < nearUncovered[v]) {
+      nearUncovered[v] = d;
+      nearestUncovered[v] = serial;
+    }
+  }
+  return source;
 }
 
 void SourceSampler::cover(const std::vector<double>& reach) {
   for (size_t v = 0; v < reach.size(); v++) distance[v] = std::min(distance[v], reach[v]);
+  if (uncovered.empty()) return;
+  const size_t gone = firstUncovered++;
+  uncovered.pop_front();
+  for (size_t v = 0; v < area.size(); v++) {
+    if (!std::isfinite(nearUncovered[v]) || nearestUncovered[v] != gone) continue;
+    nearUncovered[v] = INFINITY;
+    for (size_t k = 0; k < uncovered.size(); k++) {
+      const double d = norm(position[v] - position[uncovered[k]]);
+      if (d < nearUncovered[v]) {
+        nearUncovered[v] = d;
+        nearestUncovered[v] = firstUncovered + k;
+      }
+    }
+  }
 }
 
 double SourceSampler::coverage(double radius) const {

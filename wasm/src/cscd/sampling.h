@@ -2,6 +2,7 @@
 
 #include "geometrycentral/utilities/vector3.h"
 
+#include <deque>
 #include <random>
 #include <vector>
 
@@ -23,20 +24,22 @@ constexpr double kCoverageRadius = 0.03;
 // realization measures what a source and its separator cover (its own geodesic distance), so the
 // sampler is the same for every representation.
 //
-// Sources are drawn in rounds whose separators are computed together (Pipeline): a draw also keeps
-// away from the round's earlier sources, whose loops are not known yet (d_i is then the distance to
-// the covered set or the straight distance to those sources, whichever is nearer: no solve, so the
-// draws of a round cost next to nothing), while coverage counts only what is covered.
+// Sources are drawn ahead of their separators (Pipeline: a window of drawAhead sources), which are
+// computed side by side: a draw also keeps away from the sources drawn before it whose separators are
+// not covered yet (d_i is then the distance to the covered set or the straight distance to those
+// sources, whichever is nearer: no solve, so a draw costs next to nothing), while coverage counts only
+// what is covered.
 class SourceSampler {
 public:
   // areas: per element, the surface area it stands for (only ratios matter); diagonal: of the bounding box.
   SourceSampler(std::vector<geometrycentral::Vector3> positions, std::vector<double> areas, double diagonal, uint32_t seed);
 
-  // The next source of a round whose earlier sources are `round` (empty: the round's first draw).
-  size_t next(const std::vector<size_t>& round);
+  // The next source, away from what is covered and from the sources drawn and not covered yet.
+  size_t next();
 
-  // Marks as covered what `reach` measures: per element, its geodesic distance from a source and its
-  // separator (a function of the shape alone, so a pool worker computes it with the separator).
+  // Marks as covered what `reach` measures (per element, its geodesic distance from a source and its
+  // separator: a function of the shape alone, so a pool worker computes it with the separator), for the
+  // oldest source drawn and not covered yet: sources are covered in the order they were drawn.
   void cover(const std::vector<double>& reach);
 
   // Share of the surface area within `radius` of what is covered.
@@ -47,8 +50,13 @@ private:
   std::vector<double> area;
   std::mt19937 rng;
   std::vector<double> distance; // to the covered set; +infinity before the first source
-  std::vector<double> nearRound; // to the covered set or the current round's sources drawn so far
-  size_t roundSeen = 0;          // how many of the round's sources nearRound includes
+  // The sources drawn and not covered yet, oldest first, with the serial number of the first; per
+  // element the straight distance to the nearest of them and that one's serial number (so covering a
+  // source revisits only the elements it was nearest to).
+  std::deque<size_t> uncovered;
+  size_t firstUncovered = 0;
+  std::vector<double> nearUncovered;
+  std::vector<size_t> nearestUncovered;
   double scale;
   double totalArea = 0;
 };

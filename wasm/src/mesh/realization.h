@@ -28,7 +28,7 @@ public:
   MeshRealization(Surface& surface, const Options& options, Surface* working = nullptr);
 
   Candidate separator(size_t source);
-  size_t nextSource(const std::vector<size_t>& round) { return sampler.next(round); }
+  size_t nextSource() { return sampler.next(); }
   void cover(Candidate& candidate) {
     sampler.cover(candidate.reach);
     candidate.reach = {};

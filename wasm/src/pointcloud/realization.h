@@ -28,7 +28,7 @@ public:
   PointCloudRealization(Cloud& cloud, const Options& options);
 
   Candidate separator(size_t source);
-  size_t nextSource(const std::vector<size_t>& round) { return sampler.next(round); }
+  size_t nextSource() { return sampler.next(); }
   void cover(Candidate& candidate);
   double coverage() const;
   double resolution() const { return cloud.facts().meanSpacing; }

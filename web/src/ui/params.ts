@@ -23,7 +23,7 @@ export function optionTooltip(spec: MeshOptionSpec): string {
 }
 
 const N_AUTO_HELP = `auto: sample sources ${AUTO_N_RULE}.`;
-const WORKERS_AUTO_HELP = 'auto: every core but one, fewer when memory is short (the panel says when), at most roundSize.';
+const WORKERS_AUTO_HELP = 'auto: every core but one, fewer when memory is short (the panel says when), at most drawAhead.';
 
 /** Named option sets; each starts from the defaults. */
 export const PRESETS: Readonly<Record<string, Partial<Options>>> = {

@@ -51,7 +51,7 @@ export interface CrashRequest {
 
 /**
  * The whole CSCD-M pipeline (stage 1 from N sources, then stage 2) on the open mesh. The worker runs
- * it a few sources at a time, or a round at a time on a pool of separator workers (page-pool.ts),
+ * it a few sources at a time, or on a pool of separator workers (page-pool.ts) with sources drawn ahead,
  * sends a `progress` event with `pipeline` news after every step and answers with a `skeleton`
  * reply, or an `error` of kind `cancelled` after a `cancel`.
  */
@@ -251,8 +251,8 @@ export interface SkeletonReply {
   options: Options;
   pool: PoolReport;
   /**
-   * Wall times in the worker: stage 1 (alone: its steps summed; on a pool: from the first round to
-   * the last), stage 2 (`finish`), and the number of steps or rounds.
+   * Wall times in the worker: stage 1 (alone: its steps summed; on a pool: from the first draw to
+   * the last accept), stage 2 (`finish`), and the number of steps or accepts.
    */
   timings: { stage1Ms: number; stage2Ms: number; steps: number };
 }

@@ -481,7 +481,7 @@ function skeletonToWire(s: Skeleton): SkeletonData {
   };
 }
 
-/** Tells the page how far stage 1 is, with the loops the step or round found. */
+/** Tells the page how far stage 1 is, with the loops taken since the last news. */
 function postSources(id: number, p: PipelineProgress, notices: readonly string[]): void {
   const newLoops = p.newLoops.map(f32);
   const { newClosed } = p;
@@ -562,7 +562,7 @@ function poolSizeFor(request: SkeletonRequest, options: Options, vertices: numbe
     cores: navigator.hardwareConcurrency || 1,
     memoryGB: (navigator as WorkerNavigator & { deviceMemory?: number }).deviceMemory ?? null,
     vertices,
-    roundSize: options.roundSize,
+    drawAhead: options.drawAhead,
     sourcesLeft: options.n === 'auto' ? AUTO_N.max : options.n,
   });
 }
@@ -638,7 +638,7 @@ async function skeleton(request: SkeletonRequest): Promise<void> {
   }
 }
 
-/** Stage 1's wall time (alone: its steps summed; on a pool: from the first round to the last) and its steps or rounds. */
+/** Stage 1's wall time (alone: its steps summed; on a pool: from the first draw to the last accept) and its steps or accepts. */
 interface Stage1Run {
   stage1Ms: number;
   steps: number;

@@ -6,7 +6,7 @@ import { openNodePool, type NodePool } from '../../lib/core/node-pool.ts';
 import { runStage1, type SeparatorWorker } from '../../lib/core/pool.ts';
 import { PooledWorker, type PoolReply, type PoolRequest } from '../../lib/core/pool-worker.ts';
 import { defaultOptions } from '../../lib/core/options.ts';
-import type { MeshArrays, Options, PipelineProgress, Skeleton } from '../../lib/core/types.ts';
+import type { CandidateRecord, MeshArrays, Options, Pipeline, PipelineProgress, Skeleton } from '../../lib/core/types.ts';
 import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
 import { sharedMesh } from '../paths.ts';
 import { readMesh } from './support/meshes.ts';
@@ -124,6 +124,17 @@ describe('stage 1 on a pool of worker threads', () => {
     });
     await expect(run).rejects.toThrow('cancelled');
   }, 20_000);
+
+  it('fails the run, not the process, when taking a candidate fails', async () => {
+    const broken = {
+      draw: () => Uint32Array.of(1, 2),
+      accept: () => {
+        throw new Error('the core refused the candidate');
+      },
+    } as unknown as Pipeline;
+    const echo: SeparatorWorker = { separators: (sources) => Promise.resolve([...sources].map((source) => ({ source }) as CandidateRecord)) };
+    await expect(runStage1(broken, [echo])).rejects.toThrow('the core refused the candidate');
+  });
 
   it('stops at a cancel', async () => {
     let checks = 0;

@@ -43,8 +43,8 @@ const PROGRESS_REDRAW_MS = { gpu: 400, software: 1500 };
 
 /**
  * Least time between two updates of the progress bar, its text and the timeline while news arrives: a
- * pool sends news after every accept, some 20 to 50 a second on a small mesh, and on a software renderer each update
- * is a frame drawn on the workers' cores too.
+ * pool sends news after every accept, some 20 to 50 a second on a small mesh, and on a software
+ * renderer each update is a frame drawn on the workers' cores too.
  */
 const PROGRESS_TEXT_MS = { gpu: 100, software: 500 };
 

@@ -29,8 +29,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <deque>
 #include <cmath>
+#include <deque>
 #include <stdexcept>
 #include <string>
 #include <type_traits>

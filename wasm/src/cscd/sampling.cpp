@@ -32,13 +32,7 @@ size_t SourceSampler::next() {
 
   const size_t serial = firstUncovered + uncovered.size();
   uncovered.push_back(source);
-  for (size_t v = 0; v < area.size(); v++) {
-    const double d = norm(position[v] - position[source]);
-    if (d < nearUncovered[v]) {
-      nearUncovered[v] = d;
-      nearestUncovered[v] = serial;
-    }
-  }
+  for (size_t v = 0; v < area.size(); v++) offerUncovered(v, serial);
   return source;
 }
 
@@ -50,13 +44,15 @@ void SourceSampler::cover(const std::vector<double>& reach) {
   for (size_t v = 0; v < area.size(); v++) {
     if (!std::isfinite(nearUncovered[v]) || nearestUncovered[v] != gone) continue;
     nearUncovered[v] = INFINITY;
-    for (size_t k = 0; k < uncovered.size(); k++) {
-      const double d = norm(position[v] - position[uncovered[k]]);
-      if (d < nearUncovered[v]) {
-        nearUncovered[v] = d;
-        nearestUncovered[v] = firstUncovered + k;
-      }
-    }
+    for (size_t k = 0; k < uncovered.size(); k++) offerUncovered(v, firstUncovered + k);
+  }
+}
+
+void SourceSampler::offerUncovered(size_t v, size_t serial) {
+  const double d = norm(position[v] - position[uncovered[serial - firstUncovered]]);
+  if (d < nearUncovered[v]) {
+    nearUncovered[v] = d;
+    nearestUncovered[v] = serial;
   }
 }
 

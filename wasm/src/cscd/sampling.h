@@ -46,6 +46,9 @@ public:
   double coverage(double radius) const;
 
 private:
+  // Element v's straight distance to the uncovered sources, lowered to that of the one numbered `serial`.
+  void offerUncovered(size_t v, size_t serial);
+
   std::vector<geometrycentral::Vector3> position;
   std::vector<double> area;
   std::mt19937 rng;

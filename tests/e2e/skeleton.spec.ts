@@ -31,20 +31,27 @@ async function openWhole(page: Page, n: number): Promise<void> {
   await setNumber(page, 'n', n);
 }
 
-/** Records every value the progress bar shows ("done/total"), from the page itself. */
+/** Records every value the progress bar shows ("done/total"), and when the status line said stage 1's progress, from the page itself. */
 async function recordProgress(page: Page): Promise<void> {
   await page.evaluate(() => {
     const bar = document.querySelector<HTMLElement>('[data-testid="sk-progress"]')!;
+    const status = document.querySelector<HTMLElement>('#status-text')!;
     const seen: string[] = [];
-    (window as unknown as { progressSeen: string[] }).progressSeen = seen;
+    const statusTimes: number[] = [];
+    Object.assign(window, { progressSeen: seen, statusTimes });
     new MutationObserver(() => seen.push(`${bar.dataset.done}/${bar.dataset.total}`)).observe(bar, {
       attributes: true,
       attributeFilter: ['data-done', 'data-total'],
     });
+    new MutationObserver(() => {
+      if (status.textContent?.startsWith('stage 1')) statusTimes.push(performance.now());
+    }).observe(status, { childList: true, characterData: true, subtree: true });
   });
 }
 
 const progressSeen = (page: Page) => page.evaluate(() => (window as unknown as { progressSeen: string[] }).progressSeen);
+/** Times (ms) at which the status line was set to stage 1's progress. */
+const statusTimes = (page: Page) => page.evaluate(() => (window as unknown as { statusTimes: number[] }).statusTimes);
 
 test('entering All separators shows progress, then candidates, packing, regions and the skeleton', async ({ page }) => {
   test.slow(); // a pipeline run and a dozen pixel reads on a software renderer
@@ -63,6 +70,12 @@ test('entering All separators shows progress, then candidates, packing, regions 
   expect(done, 'progress never goes back').toEqual([...done].sort((a, b) => a - b));
   await expect(page.getByTestId('sk-progress')).toBeHidden();
   await expect(page.getByTestId('sk-status')).toHaveAttribute('data-status', 'done');
+  // The status line follows the news at most every 500 ms on this software renderer (PROGRESS_TEXT_MS):
+  // it was set after every source, a frame each, drawn on the cores the run computes on.
+  const times = await statusTimes(page);
+  expect(times.length, 'the status line showed stage 1').toBeGreaterThanOrEqual(1);
+  const gaps = times.slice(1).map((t, i) => t - times[i]);
+  expect(Math.min(...gaps, Infinity), `status updates ${times.map(Math.round).join(' ')} ms`).toBeGreaterThanOrEqual(450);
 
   // The figures.
   await expect(page.getByTestId('sk-n')).toHaveText('20');

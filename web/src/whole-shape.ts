@@ -13,6 +13,7 @@ import { changedOptions, type StudioContext } from './studio-context.ts';
 import { COLORS, type StageKey } from './stage-defs.ts';
 import { byTestId, formatLength } from './ui/panel.ts';
 import { SkeletonPanel } from './ui/skeleton-panel.ts';
+import { PROGRESS_TEXT_MS, Throttle } from './ui/throttle.ts';
 import {
   LoopSet,
   ReconstructionLayer,
@@ -40,13 +41,6 @@ const nextTask = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
  * with a redraw every 400 ms, 1.15x without redraws (docs/parallel.md).
  */
 const PROGRESS_REDRAW_MS = { gpu: 400, software: 1500 };
-
-/**
- * Least time between two updates of the progress bar, its text and the timeline while news arrives: a
- * pool sends news after every accept, some 20 to 50 a second on a small mesh, and on a software
- * renderer each update is a frame drawn on the workers' cores too.
- */
-const PROGRESS_TEXT_MS = { gpu: 100, software: 500 };
 
 const isSkeletonLayer = (name: string) => name.startsWith('sk-');
 
@@ -86,8 +80,8 @@ export class WholeShape {
   private runs = 0;
   private redrawTimer: number | null = null;
   private lastRedraw = -Infinity;
-  private newsTimer: number | null = null;
-  private lastNewsShown = -Infinity;
+  /** The latest news in the panel and the timeline, at most every PROGRESS_TEXT_MS. */
+  private readonly newsShown = new Throttle(() => PROGRESS_TEXT_MS[this.ctx.viewer.software ? 'software' : 'gpu']);
   /** Measured cost of the last redraw of the candidate loops (ms). */
   private frameCost = 0;
 
@@ -110,7 +104,7 @@ export class WholeShape {
   /** The options changed: stop any run and drop the result, its layers and evaluation. */
   invalidate(): void {
     this.cancelRedraw();
-    this.cancelNews();
+    this.newsShown.reset();
     this.job?.cancel();
     this.job = null;
     this.runPromise = null;
@@ -149,7 +143,6 @@ export class WholeShape {
     this.invalidate();
     this.progressLoops = new LoopSet(surface, 0.6 * candidateRadius(surface));
     this.lastRedraw = performance.now(); // the first loops wait too: a short run is drawn less often
-    this.lastNewsShown = -Infinity;
     this.ctx.layerColors.set('sk-progress', COLORS.candidate);
     this.cancelRequested = false;
     this.auto = options.n === 'auto';
@@ -198,7 +191,7 @@ export class WholeShape {
       }
     } finally {
       if (id === this.jobId) {
-        this.cancelNews();
+        this.newsShown.reset();
         this.job = null;
         this.progress = null;
         this.panel.endRun(keepProgress);
@@ -224,9 +217,7 @@ export class WholeShape {
     this.lastNews = news;
     this.progress = news.total > 0 ? news.done / news.total : 0;
     // The first news of a run and the last at once, the others at most every PROGRESS_TEXT_MS.
-    const wait = this.lastNewsShown + PROGRESS_TEXT_MS[this.ctx.viewer.software ? 'software' : 'gpu'] - performance.now();
-    if (news.finished || wait <= 0) this.showNews();
-    else if (this.newsTimer === null) this.newsTimer = window.setTimeout(() => this.showNews(), wait);
+    this.newsShown.run(() => this.showNews(), news.finished);
     if (!this.progressLoops) return;
     const before = this.progressLoops.count;
     news.newLoops.forEach((loop, i) => this.progressLoops!.add(loop, news.newClosed[i] === 1));
@@ -242,19 +233,12 @@ export class WholeShape {
 
   /** The latest news in the panel and the timeline. */
   private showNews(): void {
-    this.cancelNews();
-    this.lastNewsShown = performance.now();
     const news = this.lastNews;
     if (!news) return;
     this.panel.setProgress(news.done, news.total, this.auto ? 'stage 1 · auto: ends when loops stop adding coverage' : 'stage 1');
     if (news.finished) this.panel.setStage2();
     if (this.cancelRequested) this.panel.cancelling();
     this.ctx.progressed();
-  }
-
-  private cancelNews(): void {
-    if (this.newsTimer !== null) window.clearTimeout(this.newsTimer);
-    this.newsTimer = null;
   }
 
   private drawProgress(): void {

@@ -1,6 +1,7 @@
 /** The side panel: file, status, error box, mesh facts, notes, timings, layer list (stage 1: ui/stages.ts). */
 import type { CloudFacts, MeshFacts } from '../../../lib/core/types.ts';
 import { colormapGradient } from '../viewer/colormap.ts';
+import { Throttle } from './throttle.ts';
 
 function $<T extends HTMLElement = HTMLElement>(selector: string): T {
   const element = document.querySelector<T>(selector);
@@ -54,8 +55,11 @@ export class Panel {
   private readonly statusText = $('#status-text');
   private readonly status = byTestId('status');
   private readonly error = byTestId('error');
+  private readonly progressStatus: Throttle;
 
-  constructor() {
+  /** `progressInterval`: the least time between two progress texts in the status line (PROGRESS_TEXT_MS). */
+  constructor(progressInterval: () => number) {
+    this.progressStatus = new Throttle(progressInterval);
     $('#colorbar').style.background = colormapGradient();
   }
 
@@ -70,8 +74,17 @@ export class Panel {
   }
 
   setStatus(text: string, busy = false): void {
+    this.progressStatus.reset();
     this.statusText.textContent = text;
     this.status.classList.toggle('busy', busy);
+  }
+
+  /** A computation's progress in the status line: the latest, at most once per progress interval. */
+  setProgressStatus(text: string): void {
+    this.progressStatus.run(() => {
+      this.statusText.textContent = text;
+      this.status.classList.add('busy');
+    });
   }
 
   showError(title: string, message: string): void {

@@ -29,6 +29,8 @@ public:
   const std::vector<geometrycentral::Vector3>& normals() const { return normal; }
 
 private:
+  // The share of the pairs of neighbours whose normals point against each other.
+  double opposedShare(const geometrycentral::pointcloud::PointData<std::vector<geometrycentral::pointcloud::Point>>& neighbours) const;
   bool outward(const std::vector<size_t>& tree, double spacing) const;
   void turnPatches(const std::vector<size_t>& treeOf, double spacing);
   // The points just inside and just outside point p (with its normal outward), where the sums are read.

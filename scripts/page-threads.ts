@@ -9,6 +9,7 @@
 import { spawn } from 'node:child_process';
 import { readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
+import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 import { chromium } from '@playwright/test';
 
@@ -22,7 +23,8 @@ const { positionals, values } = parseArgs({
   },
 });
 const mesh = positionals[0] ?? 'horse';
-const file = path.resolve('..', 'shared', 'data', 'meshes', `${mesh}.ply`);
+const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const file = path.join(repoRoot, '..', 'shared', 'data', 'meshes', `${mesh}.ply`);
 const traceFile = '/tmp/page-threads-trace.json';
 
 /** CPU ticks so far of every thread of every Chromium process, keyed by process type/pid/thread name/tid. */

@@ -21,7 +21,7 @@ import { ParamsPanel, STAGE1_OPTIONS } from './ui/params.ts';
 import { separatorCaption, separatorStageTimes } from './ui/separator-panel.ts';
 import { SkeletonPanel } from './ui/skeleton-panel.ts';
 import { Timeline, type PillState } from './ui/timeline.ts';
-import { PROGRESS_TEXT_MS } from './ui/throttle.ts';
+import { progressTextMs } from './ui/throttle.ts';
 import { readUrl, writeUrl } from './ui/url-state.ts';
 import { PointsLayer, SurfaceLayer, type ShapeLayer } from './viewer/layers.ts';
 import { Viewer } from './viewer/viewer.ts';
@@ -31,7 +31,7 @@ import type { Refinement } from '../../lib/core/types.ts';
 import type { CloudOpenedReply, DecimatedReply, OpenedReply, SkeletonReply, WriteRequest } from './worker/protocol.ts';
 
 const initial = readUrl();
-const panel = new Panel(() => PROGRESS_TEXT_MS[viewer.software ? 'software' : 'gpu']);
+const panel = new Panel(() => progressTextMs(viewer.software));
 const offer = new LimitOffer();
 const statusCancel = byTestId<HTMLButtonElement>('status-cancel');
 const viewer = new Viewer(document.querySelector<HTMLElement>('#viewport')!);

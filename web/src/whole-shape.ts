@@ -13,7 +13,7 @@ import { changedOptions, type StudioContext } from './studio-context.ts';
 import { COLORS, type StageKey } from './stage-defs.ts';
 import { byTestId, formatLength } from './ui/panel.ts';
 import { SkeletonPanel } from './ui/skeleton-panel.ts';
-import { PROGRESS_TEXT_MS, Throttle } from './ui/throttle.ts';
+import { progressTextMs, Throttle } from './ui/throttle.ts';
 import {
   LoopSet,
   ReconstructionLayer,
@@ -81,7 +81,7 @@ export class WholeShape {
   private redrawTimer: number | null = null;
   private lastRedraw = -Infinity;
   /** The latest news in the panel and the timeline, at most every PROGRESS_TEXT_MS. */
-  private readonly newsShown = new Throttle(() => PROGRESS_TEXT_MS[this.ctx.viewer.software ? 'software' : 'gpu']);
+  private readonly newsShown = new Throttle(() => progressTextMs(this.ctx.viewer.software));
   /** Measured cost of the last redraw of the candidate loops (ms). */
   private frameCost = 0;
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <array>
 #include <map>
+#include <numeric>
 #include <queue>
 #include <vector>
 
@@ -86,37 +87,37 @@ PointWinding::PointWinding(Cloud& cloud) : area(cloud.pointAreas()) {
   };
   // A file's normals whose signs agree between neighbours keep them: propagating along the tree turns
   // them wrong across the creases of thin parts (elephant_small's tusks and tail, whose loops then failed
-  // the centroid test). The whole cloud is then one tree for the sign and the patches below.
-  const bool keepSigns = cloud.facts().normalsFromFile && opposedShare(neighbours) <= kMaxOpposedShare;
-  if (keepSigns) {
-    for (size_t p = 0; p < n; p++) tree.push_back(p);
+  // the centroid test). The whole cloud is then one tree (treeOf all 0) for the sign and the patches.
+  if (cloud.facts().normalsFromFile && opposedShare(neighbours) <= kMaxOpposedShare) {
+    tree.resize(n);
+    std::iota(tree.begin(), tree.end(), size_t(0));
     if (!outward(tree, spacing))
-      for (size_t p : tree) normal[p] = -normal[p];
-    trees = 1;
-  }
-  for (size_t left = keepSigns ? 0 : n; left > 0;) {
-    size_t top = SIZE_MAX;
-    for (size_t p = 0; p < n; p++)
-      if (!oriented[p] && (top == SIZE_MAX || position[p].z > position[top].z)) top = p;
-    tree.assign(1, top);
-    oriented[top] = 1;
-    left--;
-    reach(top);
-    while (!frontier.empty()) {
-      const auto [weight, link] = frontier.top();
-      frontier.pop();
-      const auto [p, from] = link;
-      if (oriented[p]) continue;
-      if (dot(normal[p], normal[from]) < 0) normal[p] = -normal[p];
-      oriented[p] = 1;
-      tree.push_back(p);
+      for (Vector3& v : normal) v = -v;
+  } else {
+    for (size_t left = n; left > 0;) {
+      size_t top = SIZE_MAX;
+      for (size_t p = 0; p < n; p++)
+        if (!oriented[p] && (top == SIZE_MAX || position[p].z > position[top].z)) top = p;
+      tree.assign(1, top);
+      oriented[top] = 1;
       left--;
-      reach(p);
+      reach(top);
+      while (!frontier.empty()) {
+        const auto [weight, link] = frontier.top();
+        frontier.pop();
+        const auto [p, from] = link;
+        if (oriented[p]) continue;
+        if (dot(normal[p], normal[from]) < 0) normal[p] = -normal[p];
+        oriented[p] = 1;
+        tree.push_back(p);
+        left--;
+        reach(p);
+      }
+      if (!outward(tree, spacing))
+        for (size_t p : tree) normal[p] = -normal[p];
+      for (size_t p : tree) treeOf[p] = trees;
+      trees++;
     }
-    if (!outward(tree, spacing))
-      for (size_t p : tree) normal[p] = -normal[p];
-    for (size_t p : tree) treeOf[p] = trees;
-    trees++;
   }
   turnPatches(treeOf, spacing);
 }

@@ -4,7 +4,10 @@
  * accept, some 20 to 60 a second, and every change to the page is a frame, which a software renderer
  * draws on the cores the workers compute on (docs/parallel.md, "The status line").
  */
-export const PROGRESS_TEXT_MS = { gpu: 100, software: 500 };
+const PROGRESS_TEXT_MS = { gpu: 100, software: 500 };
+
+/** PROGRESS_TEXT_MS for a renderer with a GPU or a software one. */
+export const progressTextMs = (software: boolean) => PROGRESS_TEXT_MS[software ? 'software' : 'gpu'];
 
 /**
  * Runs the latest of the actions it is given at most once per interval: at once when the interval since

@@ -122,6 +122,22 @@ const PointWinding& Cloud::winding() {
   return *windingNumber;
 }
 
+const std::vector<std::vector<uint32_t>>& Cloud::tuftedNeighbours() {
+  if (!tuftedAdjacency.empty()) return tuftedAdjacency;
+  tuftedAdjacency.resize(pointCount());
+  for (geometrycentral::surface::Edge e : cloudGeometry->tuftedMesh->edges()) {
+    const uint32_t a = uint32_t(e.firstVertex().getIndex()), b = uint32_t(e.secondVertex().getIndex());
+    if (a == b) continue;
+    tuftedAdjacency[a].push_back(b);
+    tuftedAdjacency[b].push_back(a);
+  }
+  for (std::vector<uint32_t>& around : tuftedAdjacency) {
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+  }
+  return tuftedAdjacency;
+}
+
 Cloud::~Cloud() = default;
 
 } // namespace cscd

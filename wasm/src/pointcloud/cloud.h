@@ -9,6 +9,7 @@
 #include "geometrycentral/pointcloud/point_position_geometry.h"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -64,6 +65,9 @@ public:
   const CloudCutLocusSolver& cutLocusSolver();
   // Inside or outside the cloud (pointcloud/winding.h), built on first use.
   const PointWinding& winding();
+  // The tufted triangulation's edges as each point's neighbours, each once (the cover repeats them): the
+  // surface graph a loop's sides are flooded over (pointcloud/shorten.cpp), built on first use.
+  const std::vector<std::vector<uint32_t>>& tuftedNeighbours();
 
   ~Cloud();
 
@@ -78,6 +82,7 @@ private:
   std::unique_ptr<CloudNeighbourhood> neighbourGraph;
   std::unique_ptr<CloudCutLocusSolver> cutLocus;
   std::unique_ptr<PointWinding> windingNumber;
+  std::vector<std::vector<uint32_t>> tuftedAdjacency; // empty until first used
 };
 
 } // namespace cscd

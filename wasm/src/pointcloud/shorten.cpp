@@ -240,15 +240,7 @@ std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop,
     inRegion[p] = !sphere || distance[p] <= spacing || norm(x - sphere->center) <= sphere->radius;
   }
 
-  // The tufted triangulation's edges (its vertex i is point i), as adjacency lists.
-  surface::SurfaceMesh& tufted = *cloud.geometry().tuftedMesh;
-  std::vector<std::vector<size_t>> adjacent(pointCount);
-  for (surface::Edge e : tufted.edges()) {
-    const size_t a = e.firstVertex().getIndex(), b = e.secondVertex().getIndex();
-    if (a == b || !inRegion[a] || !inRegion[b]) continue;
-    adjacent[a].push_back(b);
-    adjacent[b].push_back(a);
-  }
+  const std::vector<std::vector<uint32_t>>& adjacent = cloud.tuftedNeighbours();
   auto crossesLoop = [&](size_t p, size_t q) {
     const double reach = norm(positions[p] - positions[q]) + spacing;
     return distance[p] <= reach && distance[q] <= reach && positiveSide[p] != positiveSide[q];
@@ -295,6 +287,7 @@ std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop,
       frontier.pop();
       if (d > along[p]) continue;
       for (size_t q : adjacent[p]) {
+        if (!inRegion[q]) continue;
         const double through = d + norm(positions[p] - positions[q]);
         if (through < along[q]) frontier.push({along[q] = through, q});
       }

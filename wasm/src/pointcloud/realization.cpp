@@ -7,7 +7,6 @@
 #include "pointcloud/separator.h"
 
 #include <algorithm>
-#include <cmath>
 #include <set>
 
 using namespace geometrycentral;
@@ -23,34 +22,12 @@ namespace {
 // cycles. Borders hold a dozen points or more. (docs/pointcloud.md, "Where regions touch")
 constexpr size_t kMinContactPoints = 3;
 
-// Stage 2's graph: the neighbourhood graph, and an edge from each point of a piece of it smaller than k
-// points to its nearest point (among its k nearest) in a larger piece, after the graph's own edges. Such
-// pieces are a few points the bridge test cut off at a crease or in noise: no separator runs through
-// them, so each became a region and a skeleton node of its own with no edge (7 on armadillo_clean, 8 on
-// horse_nonuniform, 5 on elephant_small_clean at seed 1). Stage 1 keeps the graph as it is.
 Samples pointSamplesOf(Cloud& cloud) {
   Samples samples;
   const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();
   samples.positions = neighbourhood.positions();
   samples.weights = cloud.pointAreas();
   for (const auto& [a, b] : neighbourhood.graph().edgeVertices) samples.edges.push_back({uint32_t(a), uint32_t(b)});
-
-  const std::vector<int>& component = neighbourhood.pointComponent();
-  std::vector<size_t> pieceSize(neighbourhood.componentCount(), 0);
-  for (int c : component) pieceSize[size_t(c)]++;
-  const size_t k = cloud.facts().neighbours;
-  const auto& nearest = cloud.geometry().neighbors->neighbors;
-  for (size_t p = 0; p < samples.positions.size(); p++) {
-    if (pieceSize[size_t(component[p])] >= k) continue;
-    size_t closest = p;
-    for (pointcloud::Point q : nearest[p]) {
-      const size_t i = q.getIndex();
-      if (pieceSize[size_t(component[i])] >= k &&
-          (closest == p || norm2(samples.positions[i] - samples.positions[p]) < norm2(samples.positions[closest] - samples.positions[p])))
-        closest = i;
-    }
-    if (closest != p) samples.edges.push_back({uint32_t(p), uint32_t(closest)});
-  }
   return samples;
 }
 
@@ -113,14 +90,6 @@ Regions PointCloudRealization::regions(const Selection<Candidate>& packed) {
   std::vector<std::vector<uint32_t>> neighbours(n);
   for (size_t p = 0; p < n; p++)
     for (size_t k = graph.rowStart[p]; k < graph.rowStart[p + 1]; k++) neighbours[p].push_back(uint32_t(graph.neighbour[k]));
-  // The small pieces' edges to larger ones (pointSamplesOf): a piece the heat did not reach either takes
-  // its distance through its edge.
-  for (size_t e = graph.edgeVertices.size(); e < pointSamples.edges.size(); e++) {
-    const auto [p, q] = pointSamples.edges[e];
-    neighbours[p].push_back(q);
-    neighbours[q].push_back(p);
-    if (!std::isfinite(distance[p])) distance[p] = distance[q] + norm(pointSamples.positions[p] - pointSamples.positions[q]);
-  }
   // Regions touch where a triangle of the tufted triangulation (the points' local triangulations) has
   // points of both; only triangles whose three edges the neighbourhood graph kept, so that no region
   // touches another across a gap the graph does not bridge (two fingers side by side).

@@ -70,10 +70,26 @@ PointWinding::PointWinding(Cloud& cloud) : area(cloud.pointAreas()) {
     normal[p] = geometry.normals[p];
   }
 
-  // Prim's tree from the topmost unvisited point; each point takes the orientation of the tree
-  // neighbour it is reached from. Ties in the weight go to the lower index, so the orientation is the
-  // same on every run. Each tree's sign is then chosen by its winding number (outward), and patches of it
-  // turned where the whole cloud's winding number says so (turnPatches).
+  // A file's normals whose signs agree between neighbours keep them: propagating along the tree turns
+  // them wrong across the creases of thin parts (elephant_small's tusks and tail, whose loops then failed
+  // the centroid test). The whole cloud is then one tree for the sign and the patches.
+  std::vector<size_t> treeOf(n, 0);
+  if (cloud.facts().normalsFromFile && opposedShare(neighbours) <= kMaxOpposedShare) {
+    std::vector<size_t> all(n);
+    std::iota(all.begin(), all.end(), size_t(0));
+    if (!outward(all, spacing))
+      for (Vector3& v : normal) v = -v;
+  } else {
+    treeOf = orientAlongTrees(neighbours, spacing);
+  }
+  turnPatches(treeOf, spacing);
+}
+
+// Prim's tree from the topmost unvisited point; each point takes the orientation of the tree neighbour
+// it is reached from. Ties in the weight go to the lower index, so the orientation is the same on every
+// run. Each tree's sign is then chosen by its winding number (outward). Returns each point's tree.
+std::vector<size_t> PointWinding::orientAlongTrees(const PointData<std::vector<Point>>& neighbours, double spacing) {
+  const size_t n = normal.size();
   std::vector<char> oriented(n, 0);
   std::vector<size_t> tree, treeOf(n, 0);
   size_t trees = 0;
@@ -85,41 +101,31 @@ PointWinding::PointWinding(Cloud& cloud) : area(cloud.pointAreas()) {
       if (!oriented[i]) frontier.push({1 - std::abs(dot(normal[p], normal[i])), {i, p}});
     }
   };
-  // A file's normals whose signs agree between neighbours keep them: propagating along the tree turns
-  // them wrong across the creases of thin parts (elephant_small's tusks and tail, whose loops then failed
-  // the centroid test). The whole cloud is then one tree (treeOf all 0) for the sign and the patches.
-  if (cloud.facts().normalsFromFile && opposedShare(neighbours) <= kMaxOpposedShare) {
-    tree.resize(n);
-    std::iota(tree.begin(), tree.end(), size_t(0));
-    if (!outward(tree, spacing))
-      for (Vector3& v : normal) v = -v;
-  } else {
-    for (size_t left = n; left > 0;) {
-      size_t top = SIZE_MAX;
-      for (size_t p = 0; p < n; p++)
-        if (!oriented[p] && (top == SIZE_MAX || position[p].z > position[top].z)) top = p;
-      tree.assign(1, top);
-      oriented[top] = 1;
+  for (size_t left = n; left > 0;) {
+    size_t top = SIZE_MAX;
+    for (size_t p = 0; p < n; p++)
+      if (!oriented[p] && (top == SIZE_MAX || position[p].z > position[top].z)) top = p;
+    tree.assign(1, top);
+    oriented[top] = 1;
+    left--;
+    reach(top);
+    while (!frontier.empty()) {
+      const auto [weight, link] = frontier.top();
+      frontier.pop();
+      const auto [p, from] = link;
+      if (oriented[p]) continue;
+      if (dot(normal[p], normal[from]) < 0) normal[p] = -normal[p];
+      oriented[p] = 1;
+      tree.push_back(p);
       left--;
-      reach(top);
-      while (!frontier.empty()) {
-        const auto [weight, link] = frontier.top();
-        frontier.pop();
-        const auto [p, from] = link;
-        if (oriented[p]) continue;
-        if (dot(normal[p], normal[from]) < 0) normal[p] = -normal[p];
-        oriented[p] = 1;
-        tree.push_back(p);
-        left--;
-        reach(p);
-      }
-      if (!outward(tree, spacing))
-        for (size_t p : tree) normal[p] = -normal[p];
-      for (size_t p : tree) treeOf[p] = trees;
-      trees++;
+      reach(p);
     }
+    if (!outward(tree, spacing))
+      for (size_t p : tree) normal[p] = -normal[p];
+    for (size_t p : tree) treeOf[p] = trees;
+    trees++;
   }
-  turnPatches(treeOf, spacing);
+  return treeOf;
 }
 
 // A tree's propagation can turn at a junction of thin parts: tree_woodske_SW's trunk came out inside out

@@ -31,6 +31,9 @@ public:
 private:
   // The share of the pairs of neighbours whose normals point against each other.
   double opposedShare(const geometrycentral::pointcloud::PointData<std::vector<geometrycentral::pointcloud::Point>>& neighbours) const;
+  // Orients the normals by propagation along spanning trees of the neighbour graph; each point's tree.
+  std::vector<size_t> orientAlongTrees(
+      const geometrycentral::pointcloud::PointData<std::vector<geometrycentral::pointcloud::Point>>& neighbours, double spacing);
   bool outward(const std::vector<size_t>& tree, double spacing) const;
   void turnPatches(const std::vector<size_t>& treeOf, double spacing);
   // The points just inside and just outside point p (with its normal outward), where the sums are read.

@@ -38,17 +38,22 @@ Vector3 fromEigen(const Eigen::Vector3d& v) { return Vector3{v.x(), v.y(), v.z()
 MlsSurface::MlsSurface(std::vector<Vector3> points_, size_t neighbours_)
     : points(std::move(points_)), neighbours(neighbours_), finder(std::make_unique<NearestNeighborFinder>(points)) {}
 
-std::vector<size_t> MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache) const {
-  if (!cache) return finder->kNearest(at, k);
+void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::vector<size_t>& near) const {
+  if (!cache) {
+    near = finder->kNearest(at, k);
+    return;
+  }
   if (cache->reach >= 0) {
-    std::vector<std::pair<double, size_t>> byDistance;
-    byDistance.reserve(cache->candidates.size());
+    std::vector<std::pair<double, size_t>>& byDistance = cache->byDistance;
+    byDistance.clear();
     for (size_t i : cache->candidates) byDistance.push_back({norm2(points[i] - at), i});
-    std::partial_sort(byDistance.begin(), byDistance.begin() + k, byDistance.end());
+    // The k nearest in order: selected, then sorted (a heap's partial sort of all candidates cost twice as much).
+    std::nth_element(byDistance.begin(), byDistance.begin() + (k - 1), byDistance.end());
     if (std::sqrt(byDistance[k - 1].first) + norm(at - cache->centre) < cache->reach) {
-      std::vector<size_t> near(k);
+      std::sort(byDistance.begin(), byDistance.begin() + k);
+      near.resize(k);
       for (size_t j = 0; j < k; j++) near[j] = byDistance[j].second;
-      return near;
+      return;
     }
   }
   const size_t count = std::min(kCandidateFactor * k, points.size());
@@ -56,7 +61,7 @@ std::vector<size_t> MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache
   cache->candidates = finder->kNearest(at, count);
   // Every point left out is at least as far as the farthest candidate; all of them are in when count is every point.
   cache->reach = count == points.size() ? INFINITY : norm(points[cache->candidates.back()] - at);
-  return std::vector<size_t>(cache->candidates.begin(), cache->candidates.begin() + k);
+  near.assign(cache->candidates.begin(), cache->candidates.begin() + k);
 }
 
 MlsPoint MlsSurface::project(Vector3 query, MlsNeighbourCache* cache) const {
@@ -65,8 +70,9 @@ MlsPoint MlsSurface::project(Vector3 query, MlsNeighbourCache* cache) const {
   const size_t k = std::min(neighbours, points.size());
   std::vector<double> weights(k), heights(k); // heights over the plane
   std::vector<Eigen::Matrix<double, 6, 1>> local(k); // the quadratic's monomials at each neighbour
+  std::vector<size_t> near;
   for (int round = 0; round < kRounds; round++) {
-    const std::vector<size_t> near = kNearest(at, k, cache);
+    kNearest(at, k, cache, near);
     double farthest2 = 0;
     for (size_t i : near) farthest2 = std::max(farthest2, norm2(points[i] - at));
     const double h = std::sqrt(farthest2) / 2;

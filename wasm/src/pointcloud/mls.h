@@ -4,6 +4,7 @@
 #include "geometrycentral/utilities/vector3.h"
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace cscd {
@@ -32,6 +33,7 @@ struct MlsNeighbourCache {
   geometrycentral::Vector3 centre{0, 0, 0};
   double reach = -1; // none yet
   std::vector<size_t> candidates;
+  std::vector<std::pair<double, size_t>> byDistance; // scratch of the queries, kept to spare allocations
 };
 
 class MlsSurface {
@@ -45,8 +47,8 @@ public:
   size_t nearestPoint(geometrycentral::Vector3 query) const;
 
 private:
-  // The k nearest points of `at`, the nearest first.
-  std::vector<size_t> kNearest(geometrycentral::Vector3 at, size_t k, MlsNeighbourCache* cache) const;
+  // The k nearest points of `at` into `near`, the nearest first.
+  void kNearest(geometrycentral::Vector3 at, size_t k, MlsNeighbourCache* cache, std::vector<size_t>& near) const;
 
   std::vector<geometrycentral::Vector3> points;
   size_t neighbours;

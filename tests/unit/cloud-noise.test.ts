@@ -82,6 +82,27 @@ describe('noisy clouds', () => {
     }
   });
 
+  it('leaves no skeleton node without an edge: points the graph cuts off go with their nearest larger piece', () => {
+    // The bridge test cuts a point or two off this cloud's graph; with no separator through them, each
+    // became a node of its own with no edge (one at seeds 1 and 2 before 2026-12-04).
+    const hand = core.openCloud(readCloud('hand_noise_subsample.ply'));
+    try {
+      const graph = hand.neighbourhood();
+      expect(graph.components).toBeGreaterThan(1);
+      for (const seed of [1, 2]) {
+        const skeleton = hand.skeleton({ n: 40, seed });
+        const degree = new Array<number>(skeleton.radii.length).fill(0);
+        skeleton.edges.forEach((node) => degree[node]++);
+        expect(degree.filter((d) => d === 0), `seed ${seed}`).toEqual([]);
+        // Every point still has a node.
+        expect(skeleton.vertexToNode).toHaveLength(hand.facts.points);
+        expect(Math.max(...skeleton.vertexToNode)).toBeLessThan(skeleton.radii.length);
+      }
+    } finally {
+      hand.dispose();
+    }
+  });
+
   it('gives the noisy horse four legs, a head and a tail: its orientation is not turned in patches', () => {
     // Orientation patches turned wherever that fitted the winding number a little better (half of what
     // righting a lone inverted patch gains, not twice) turned two patches of this cloud's noisy belly:

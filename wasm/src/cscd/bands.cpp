@@ -342,20 +342,32 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   for (const auto& [a, b] : samples.edges) spacing += norm(samples.positions[a] - samples.positions[b]);
   spacing /= std::max<size_t>(1, samples.edges.size());
 
-  // Node of every piece: a region's piece nearest its separator is the region's node, the others new.
+  // Node of every piece: a region's piece nearest its separator (the largest, where none is nearer) is
+  // the region's node, the others new; but pieces that no element edges join to that one within the
+  // region are the region's too. They hold elements the realization gave the region across a gap (points
+  // a cloud's neighbourhood graph cut off: ElementGraph::adoptive), which would be nodes with no edge.
   std::vector<uint32_t> mainPiece(regions.count, kNone);
   for (uint32_t p = 0; p < pieceCount; p++) {
     uint32_t& m = mainPiece[pieces.list[p].region];
-    if (m == kNone || distance[pieces.list[p].nearest] < distance[pieces.list[m].nearest]) m = p;
+    const double nearest = distance[pieces.list[p].nearest];
+    if (m == kNone || nearest < distance[pieces.list[m].nearest] ||
+        (nearest == distance[pieces.list[m].nearest] && pieces.list[p].elements.size() > pieces.list[m].elements.size()))
+      m = p;
   }
+  UnionFind withinRegions(pieceCount);
+  for (const auto& [pair, n] : pieces.contacts)
+    if (pieces.list[pair[0]].region == pieces.list[pair[1]].region) withinRegions.unite(pair[0], pair[1]);
+  auto acrossGap = [&](uint32_t p) {
+    return withinRegions.find(p) != withinRegions.find(mainPiece[pieces.list[p].region]);
+  };
   const size_t oldNodes = graph.nodes.size();
   std::vector<uint32_t> nodeOf(pieceCount);
   std::vector<std::vector<uint32_t>> piecesOf(oldNodes);
   for (uint32_t p = 0; p < pieceCount; p++) {
     const uint32_t region = pieces.list[p].region;
-    nodeOf[p] = mainPiece[region] == p ? region : uint32_t(piecesOf.size());
+    nodeOf[p] = mainPiece[region] == p || acrossGap(p) ? region : uint32_t(piecesOf.size());
     if (nodeOf[p] == piecesOf.size()) piecesOf.emplace_back();
-    piecesOf[nodeOf[p]].push_back(p);
+    if (!acrossGap(p)) piecesOf[nodeOf[p]].push_back(p);
   }
   const size_t nodeCount = piecesOf.size();
 
@@ -370,6 +382,7 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
     const double middle = (low + high) / 2, half = std::max(width[piece.region], high - low) / 4;
     const Slice middleSlice = slice(piece, samples, distance, middle - half, middle + half);
     const uint32_t node = nodeOf[p];
+    if (acrossGap(p)) continue;
     radius[node] = middleSlice.radius;
     if (node < oldNodes) continue;
     position[node] = middleSlice.centroid;

@@ -73,16 +73,23 @@ Regions growRegions(const ElementGraph& graph, std::vector<double> distance, std
     }
   floodWaiting();
 
-  // Components that no separator reached: one region each.
+  // Components that no separator reached: one region each, but for adopted elements (after the others,
+  // as their adoptive elements may be in such a component).
   regions.count = separators;
+  auto adopted = [&](size_t v) { return graph.adoptive && (*graph.adoptive)[v] != kNoRegion; };
+  std::vector<char> isAdopted(n, 0);
+  for (size_t v = 0; v < n; v++) isAdopted[v] = label[v] == kNoRegion && adopted(v);
   std::vector<uint32_t> componentRegion;
   for (size_t v = 0; v < n; v++) {
-    if (label[v] != kNoRegion) continue;
+    if (label[v] != kNoRegion || isAdopted[v]) continue;
     size_t c = size_t(graph.component[v]);
     if (componentRegion.size() <= c) componentRegion.resize(c + 1, kNoRegion);
     if (componentRegion[c] == kNoRegion) componentRegion[c] = uint32_t(regions.count++);
     label[v] = componentRegion[c];
   }
+  for (size_t v = 0; v < n; v++)
+    if (isAdopted[v]) label[v] = label[(*graph.adoptive)[v]];
+  auto anyAdopted = [&](const std::array<uint32_t, 3>& t) { return isAdopted[t[0]] || isAdopted[t[1]] || isAdopted[t[2]]; };
 
   regions.centroid.assign(regions.count, Vector3{0, 0, 0});
   regions.area.assign(regions.count, 0);
@@ -96,6 +103,7 @@ Regions growRegions(const ElementGraph& graph, std::vector<double> distance, std
   // The elements of each side of each contact, where a contact needs more than one.
   std::map<std::array<size_t, 2>, std::array<std::set<uint32_t>, 2>> sides;
   for (const auto& t : graph.triangles) {
+    if (anyAdopted(t)) continue;
     std::array<size_t, 3> l{label[t[0]], label[t[1]], label[t[2]]};
     if (graph.minContact > 1)
       for (uint32_t a : t)
@@ -111,6 +119,7 @@ Regions growRegions(const ElementGraph& graph, std::vector<double> distance, std
     if (l[0] != l[2]) regions.adjacent.insert({l[0], l[2]});
   }
   for (const auto& t : graph.junctionTriangles ? *graph.junctionTriangles : graph.triangles) {
+    if (anyAdopted(t)) continue;
     std::array<size_t, 3> l{label[t[0]], label[t[1]], label[t[2]]};
     std::sort(l.begin(), l.end());
     if (l[0] != l[1] && l[1] != l[2]) regions.junctions.insert(l);

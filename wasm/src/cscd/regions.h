@@ -30,6 +30,9 @@ constexpr uint32_t kNoRegion = std::numeric_limits<uint32_t>::max();
 // tell which regions touch and where three meet: two regions touch where triangles have elements of
 // both, at least `minContact` of each (1: any triangle will do) unless the two meet a third there;
 // three meet where a triangle of `junctionTriangles` (when given, else of `triangles`) has one of each.
+// `adoptive` (when given) names, per element of a piece too small to be a part of the shape, an element of
+// a larger piece (kNoRegion: none): such an element that no separator reaches joins that one's region
+// instead of making one of its own, and tells nothing of where regions touch.
 struct ElementGraph {
   const std::vector<geometrycentral::Vector3>& positions;
   const std::vector<double>& areas;
@@ -39,13 +42,15 @@ struct ElementGraph {
   const std::vector<std::array<uint32_t, 3>>& triangles;
   size_t minContact = 1;
   const std::vector<std::array<uint32_t, 3>>* junctionTriangles = nullptr;
+  const std::vector<uint32_t>* adoptive = nullptr;
 };
 
 // Regions from the distance to the nearest of `separators` separators (+infinity where none reaches)
 // and the elements each separator runs through (`seeds`: its index, kNoRegion elsewhere). Labels flow
 // from the seeds outwards in order of increasing distance (a watershed), each element taking the label
 // of its nearest already-labelled neighbour; every region is connected (a label's smaller pieces join
-// the regions around them); elements that no separator reaches become one region per component.
+// the regions around them); elements that no separator reaches become one region per component, but
+// for those with an adoptive element, which join its region.
 Regions growRegions(const ElementGraph& graph, std::vector<double> distance, std::vector<uint32_t> seeds,
                     size_t separators);
 

@@ -7,6 +7,7 @@
 #include "pointcloud/separator.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 using namespace geometrycentral;
@@ -107,8 +108,28 @@ Regions PointCloudRealization::regions(const Selection<Candidate>& packed) {
     if (inGraph(t[0], t[1]) && inGraph(t[1], t[2]) && inGraph(t[0], t[2])) triangles.push_back(t);
     tufted.push_back(t);
   }
+  // Pieces of the graph under k points are a few points the bridge test cut off at a crease or in noise:
+  // each point of one is adopted by its nearest point (among its k nearest) in a larger piece, else it
+  // would become a skeleton node with no edge (7 on armadillo_clean at seed 1). Adopted, not linked by an
+  // edge, so that no label flows through them across the gap the test found (docs/pointcloud.md,
+  // "Cut-off points and what the lone nodes hid").
+  const std::vector<int>& component = neighbourhood.pointComponent();
+  std::vector<size_t> pieceSize(neighbourhood.componentCount(), 0);
+  for (int c : component) pieceSize[size_t(c)]++;
+  const size_t smallPiece = cloud.facts().neighbours;
+  const auto& nearest = cloud.geometry().neighbors->neighbors;
+  std::vector<uint32_t> adoptive(n, kNoRegion);
+  for (size_t p = 0; p < n; p++) {
+    if (pieceSize[size_t(component[p])] >= smallPiece) continue;
+    double closest = INFINITY;
+    for (pointcloud::Point q : nearest[p]) {
+      const size_t i = q.getIndex();
+      const double d = norm2(pointSamples.positions[i] - pointSamples.positions[p]);
+      if (pieceSize[size_t(component[i])] >= smallPiece && d < closest) closest = d, adoptive[p] = uint32_t(i);
+    }
+  }
   const ElementGraph elements{pointSamples.positions, pointSamples.weights, neighbours, pointSamples.edges,
-                              neighbourhood.pointComponent(), triangles, kMinContactPoints, &tufted};
+                              component, triangles, kMinContactPoints, &tufted, &adoptive};
   return growRegions(elements, std::move(distance), std::move(seeds), packed.size());
 }
 

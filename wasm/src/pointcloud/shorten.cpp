@@ -2,8 +2,6 @@
 
 #include "cscd/errors.h"
 
-#include <Eigen/SparseCholesky>
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -92,6 +90,38 @@ Polyline resampled(const Polyline& loop, double spacing) {
   return points;
 }
 
+// Solves M x = rhs, M the symmetric cyclic tridiagonal matrix with `diagonal` whose point i is coupled to
+// point i + 1 (mod n) by -coupling[i]: the Thomas algorithm on M less its corner pair, corrected by
+// Sherman-Morrison; M is strictly diagonally dominant, so it needs no pivoting. O(n): a sparse LDLT of
+// the same matrix, ordered and analysed anew at every step, took a fifth of the shortening's time.
+Polyline solveCyclicTridiagonal(std::vector<double> diagonal, const std::vector<double>& coupling, const Polyline& rhs) {
+  const size_t n = diagonal.size();
+  const double gamma = -diagonal[0], corner = -coupling[n - 1];
+  diagonal[0] -= gamma;
+  diagonal[n - 1] -= corner * corner / gamma;
+  std::vector<double> upper(n, 0), pivot(n);
+  pivot[0] = diagonal[0];
+  for (size_t i = 1; i < n; i++) {
+    upper[i - 1] = -coupling[i - 1] / pivot[i - 1];
+    pivot[i] = diagonal[i] + coupling[i - 1] * upper[i - 1];
+  }
+  auto solve = [&](auto b) {
+    b[0] = b[0] / pivot[0];
+    for (size_t i = 1; i < n; i++) b[i] = (b[i] + coupling[i - 1] * b[i - 1]) / pivot[i];
+    for (size_t i = n - 1; i-- > 0;) b[i] = b[i] - upper[i] * b[i + 1];
+    return b;
+  };
+  std::vector<double> u(n, 0);
+  u[0] = gamma;
+  u[n - 1] = corner;
+  const Polyline y = solve(rhs);
+  const std::vector<double> z = solve(std::move(u));
+  const Vector3 share = (y[0] + corner / gamma * y[n - 1]) / (1 + z[0] + corner / gamma * z[n - 1]);
+  Polyline x(n);
+  for (size_t i = 0; i < n; i++) x[i] = y[i] - z[i] * share;
+  return x;
+}
+
 // The energy of the paper with the loop measured in spacings: sum H(s_i) + lambda sum max(0, d_i - r)^2.
 struct LoopEnergy {
   double spacing;
@@ -145,24 +175,14 @@ struct LoopEnergy {
     auto tangential = [&](size_t i, Vector3 v) { return v - dot(v, onSurface[i].normal) * onSurface[i].normal; };
 
     const double slowestMode = std::pow(2 * M_PI / double(n), 2) * std::accumulate(weight.begin(), weight.end(), 0.) / double(n);
-    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<double> diagonal(n);
+    Polyline rhs(n);
     for (size_t i = 0; i < n; i++) {
-      const size_t j = (i + 1) % n;
-      entries.emplace_back(i, i, weight[i] + weight[(i + n - 1) % n] + penalty[i] + slowestMode);
-      entries.emplace_back(i, j, -weight[i]);
-      entries.emplace_back(j, i, -weight[i]);
+      diagonal[i] = weight[i] + weight[(i + n - 1) % n] + penalty[i] + slowestMode;
+      rhs[i] = -tangential(i, g[i]);
     }
-    Eigen::SparseMatrix<double> metric(n, n);
-    metric.setFromTriplets(entries.begin(), entries.end());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(metric);
-    Eigen::MatrixXd rhs(n, 3);
-    for (size_t i = 0; i < n; i++) {
-      const Vector3 t = -tangential(i, g[i]);
-      rhs.row(i) << t.x, t.y, t.z;
-    }
-    const Eigen::MatrixXd solved = solver.solve(rhs);
-    Polyline direction(n);
-    for (size_t i = 0; i < n; i++) direction[i] = tangential(i, Vector3{solved(i, 0), solved(i, 1), solved(i, 2)});
+    Polyline direction = solveCyclicTridiagonal(std::move(diagonal), weight, rhs);
+    for (size_t i = 0; i < n; i++) direction[i] = tangential(i, direction[i]);
     return direction;
   }
 };

@@ -82,6 +82,26 @@ describe('noisy clouds', () => {
     }
   });
 
+  it('traces a loop where the descent along the graph stops at a local minimum of the distance', () => {
+    // On the noisy deer the heat distance (from the tufted triangulation) has local minima along the
+    // sparser graph: 17 of 40 sources found no loop so, these three among them (trace-failed before
+    // 2026-12-04). The path goes on along the graph's shortest path towards the source.
+    const deer = core.openCloud(readCloudFile(path.join(sharedData, 'pointclouds', 'deer_noise1.0.ply')));
+    try {
+      for (const source of [4935, 9513, 16327]) {
+        const stages = deer.separatorStages(source);
+        expect(stages.status, `source ${source}`).not.toBe('trace-failed');
+        // A closed loop through distinct points, from the target to where the two paths meet and back.
+        const points = Array.from(stages.approxLoopPoints);
+        expect(points.length, `source ${source}`).toBeGreaterThanOrEqual(3);
+        expect(new Set(points).size, `source ${source}`).toBe(points.length);
+        expect(points[0], `source ${source}`).toBe(stages.target);
+      }
+    } finally {
+      deer.dispose();
+    }
+  });
+
   it('leaves no skeleton node without an edge: points the graph cuts off go with their nearest larger piece', () => {
     // The bridge test cuts a point or two off this cloud's graph; with no separator through them, each
     // became a node of its own with no edge (one at seeds 1 and 2 before 2026-12-04).

@@ -29,7 +29,7 @@ SeparatorStatus loopThrough(Cloud& cloud, size_t source, const CloudTarget& targ
   result.loop.clear();
   result.iterates.clear();
   result.iterations = 0;
-  result.traced = traceCloudLoop(neighbourhood.graph(), result.distance, target.point, target.starts, source);
+  result.traced = traceCloudLoop(neighbourhood.graph(), neighbourhood.positions(), result.distance, target.point, target.starts, source);
   result.message = result.traced.failure;
   if (!result.traced.failure.empty()) return SeparatorStatus::TraceFailed;
   if (!shorten) return SeparatorStatus::Ok;

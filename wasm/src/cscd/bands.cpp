@@ -377,12 +377,12 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   std::vector<double> radius(nodeCount, 0);
   for (size_t node = 0; node < oldNodes; node++) position[node] = graph.nodes[node];
   for (uint32_t p = 0; p < pieceCount; p++) {
+    if (acrossGap(p)) continue;
     const Piece& piece = pieces.list[p];
     const double low = distance[piece.nearest], high = distance[piece.deepest];
     const double middle = (low + high) / 2, half = std::max(width[piece.region], high - low) / 4;
     const Slice middleSlice = slice(piece, samples, distance, middle - half, middle + half);
     const uint32_t node = nodeOf[p];
-    if (acrossGap(p)) continue;
     radius[node] = middleSlice.radius;
     if (node < oldNodes) continue;
     position[node] = middleSlice.centroid;

@@ -76,9 +76,9 @@ Regions growRegions(const ElementGraph& graph, std::vector<double> distance, std
   // Components that no separator reached: one region each, but for adopted elements (after the others,
   // as their adoptive elements may be in such a component).
   regions.count = separators;
-  auto adopted = [&](size_t v) { return graph.adoptive && (*graph.adoptive)[v] != kNoRegion; };
   std::vector<char> isAdopted(n, 0);
-  for (size_t v = 0; v < n; v++) isAdopted[v] = label[v] == kNoRegion && adopted(v);
+  if (graph.adoptive)
+    for (size_t v = 0; v < n; v++) isAdopted[v] = label[v] == kNoRegion && (*graph.adoptive)[v] != kNoRegion;
   std::vector<uint32_t> componentRegion;
   for (size_t v = 0; v < n; v++) {
     if (label[v] != kNoRegion || isAdopted[v]) continue;

@@ -49,8 +49,8 @@ struct ElementGraph {
 // and the elements each separator runs through (`seeds`: its index, kNoRegion elsewhere). Labels flow
 // from the seeds outwards in order of increasing distance (a watershed), each element taking the label
 // of its nearest already-labelled neighbour; every region is connected (a label's smaller pieces join
-// the regions around them); elements that no separator reaches become one region per component, but
-// for those with an adoptive element, which join its region.
+// the regions around them) but for adopted elements; elements that no separator reaches become one
+// region per component, but for those with an adoptive element, which join its region.
 Regions growRegions(const ElementGraph& graph, std::vector<double> distance, std::vector<uint32_t> seeds,
                     size_t separators);
 

@@ -93,7 +93,7 @@ Polyline resampled(const Polyline& loop, double spacing) {
 // Solves M x = rhs, M the symmetric cyclic tridiagonal matrix with `diagonal` whose point i is coupled to
 // point i + 1 (mod n) by -coupling[i]: the Thomas algorithm on M less its corner pair, corrected by
 // Sherman-Morrison; M is strictly diagonally dominant, so it needs no pivoting. O(n): a sparse LDLT of
-// the same matrix, ordered and analysed anew at every step, took a fifth of the shortening's time.
+// the same matrix, ordered and analysed anew at every step, cost 4-5% more shortening time (bob_clean).
 Polyline solveCyclicTridiagonal(std::vector<double> diagonal, const std::vector<double>& coupling, const Polyline& rhs) {
   const size_t n = diagonal.size();
   const double gamma = -diagonal[0], corner = -coupling[n - 1];

@@ -321,6 +321,10 @@ class WasmCloud extends Owner<CloudHandle> implements Cloud {
     return this.unwrap(this.live().windingNumbers(points));
   }
 
+  inside(points: Float64Array): Uint8Array {
+    return this.unwrap(this.live().inside(points));
+  }
+
   project(points: Polyline): { points: Polyline; normals: Float64Array; quadratic: Uint8Array } {
     return this.unwrap(this.live().project(points)) as { points: Polyline; normals: Float64Array; quadratic: Uint8Array };
   }

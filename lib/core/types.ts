@@ -439,6 +439,12 @@ export interface Cloud {
   /** Test-only: the generalised winding number (about 1 inside, 0 outside) at xyz positions, one per point. */
   windingNumbers(points: Float64Array): Float64Array;
   /**
+   * Whether each point (xyz triples) is inside the shape, 1 or 0, as the centroid test and node placement
+   * decide it: the winding number over one half on a clean cloud; on a noisy one, not joined to the
+   * outside by empty space (docs/pointcloud.md, "Inside a noisy cloud").
+   */
+  inside(points: Float64Array): Uint8Array;
+  /**
    * Points (xyz triples) projected on the cloud's MLS surface, its unit normals there (of arbitrary sign)
    * and whether the quadratic height was fitted (1; 0: the plane alone, where the cloud is noisy or sparse).
    */

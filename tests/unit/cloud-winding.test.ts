@@ -148,3 +148,62 @@ describe('winding numbers of a point cloud', () => {
     }
   });
 });
+
+describe('inside a noisy cloud', () => {
+  // deer_noise1.0: noise of 1% of the diagonal, about as thick as the deer's legs and antlers. PCA normals
+  // there lie across the thin parts in any direction, and no orientation makes the winding number about 1
+  // inside them; Cloud.inside floods the outside through the empty space of a grid instead.
+  const deerNodes = Float64Array.from(readFileSync(path.join(sharedData, 'reference_skeletons', 'deer_skeleton.obj'), 'utf8')
+    .split('\n').filter((line) => line.startsWith('v ')).flatMap((line) => line.trim().split(/\s+/).slice(1, 4).map(Number)));
+  const clean = readCloud(path.join(sharedData, 'pointclouds', 'deer_clean.ply'));
+  const diagonal = 1.3757550026274132; // deer_clean's bounding-box diagonal
+  /** Every 5th of deer_clean's points moved `offset` diagonals along its outward (file) normal. */
+  const outwards = (offset: number) => Float64Array.from({ length: 3 * Math.floor(clean.positions.length / 15) },
+    (_, k) => clean.positions[15 * Math.floor(k / 3) + (k % 3)] + offset * diagonal * clean.normals![15 * Math.floor(k / 3) + (k % 3)]);
+
+  it("has the deer's reference skeleton inside, where the winding number of its PCA normals does not", () => {
+    const cloud = core.openCloud(readCloud(path.join(sharedData, 'pointclouds', 'deer_noise1.0.ply')));
+    try {
+      expect(cloud.neighbourhood().noisy).toBe(true);
+      const nodes = deerNodes.length / 3;
+      expect(nodes).toBe(47);
+      const inside = cloud.inside(deerNodes);
+      expect(inside.filter((flag) => flag === 1).length / nodes).toBeGreaterThan(0.95);
+      expect(share(cloud.windingNumbers(deerNodes), true)).toBeLessThan(0.5);
+
+      // Beyond the noise, outside stays outside: points a tenth of the diagonal out from deer_clean's
+      // surface that the clean cloud's winding number puts outside (8% inside measured: pockets between
+      // antler branches that the grown shell closes).
+      const far = outwards(0.1);
+      const reference = core.openCloud(clean);
+      try {
+        const outsideByClean = reference.windingNumbers(far).map((w) => (w < 0.5 ? 1 : 0));
+        const flags = cloud.inside(far);
+        let outsideCount = 0, insideAnyway = 0;
+        for (let i = 0; i < flags.length; i++) {
+          if (!outsideByClean[i]) continue;
+          outsideCount++;
+          insideAnyway += flags[i];
+        }
+        expect(outsideCount).toBeGreaterThan(3000);
+        expect(insideAnyway / outsideCount).toBeLessThan(0.15);
+      } finally {
+        reference.dispose();
+      }
+    } finally {
+      cloud.dispose();
+    }
+  });
+
+  it('is the winding number over one half on a clean cloud', () => {
+    const cloud = core.openCloud(clean);
+    try {
+      expect(cloud.neighbourhood().noisy).toBe(false);
+      const queries = Float64Array.from([...deerNodes, ...outwards(0.02), ...outwards(-0.005)]);
+      const winding = cloud.windingNumbers(queries);
+      expect(Array.from(cloud.inside(queries))).toEqual(Array.from(winding, (w) => (w > 0.5 ? 1 : 0)));
+    } finally {
+      cloud.dispose();
+    }
+  });
+});

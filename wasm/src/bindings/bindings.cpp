@@ -539,6 +539,16 @@ public:
     });
   }
 
+  // Whether each of the given xyz positions is inside the shape (Cloud::inside): 1 or 0.
+  val inside(const val& points) {
+    return reportingErrors([&] {
+      const std::vector<double> xyz = convertJSArrayToNumberVector<double>(points);
+      std::vector<uint8_t> flags;
+      for (size_t i = 0; i + 2 < xyz.size(); i += 3) flags.push_back(cloud->inside({xyz[i], xyz[i + 1], xyz[i + 2]}));
+      return toTypedArray("Uint8Array", flags);
+    });
+  }
+
   // Points (xyz triples) projected on the cloud's MLS surface: {points, normals (of arbitrary sign),
   // quadratic (1 where the quadratic height was fitted, 0 where the plane alone)}.
   val project(const val& points) {
@@ -607,6 +617,7 @@ EMSCRIPTEN_BINDINGS(cscd) {
       .function("referenceDistance", &CloudBinding::referenceDistance)
       .function("distanceFromPoints", &CloudBinding::distanceFromPoints)
       .function("windingNumbers", &CloudBinding::windingNumbers)
+      .function("inside", &CloudBinding::inside)
       .function("project", &CloudBinding::project)
       .function("shortenLoop", &CloudBinding::shortenLoop)
       .function("neighbourhood", &CloudBinding::neighbourhood)

@@ -33,6 +33,7 @@ export interface CloudHandle {
   referenceDistance(point: number): Float64Array | CoreFailure;
   distanceFromPoints(points: Float64Array): Float64Array | CoreFailure;
   windingNumbers(points: Float64Array): Float64Array | CoreFailure;
+  inside(points: Float64Array): Uint8Array | CoreFailure;
   project(points: Float64Array): object | CoreFailure;
   shortenLoop(polyline: Float64Array, options: object): object | CoreFailure;
   neighbourhood(): object | CoreFailure;

@@ -2,6 +2,7 @@
 
 #include "cscd/errors.h"
 #include "cscd/union_find.h"
+#include "pointcloud/exterior.h"
 #include "pointcloud/winding.h"
 
 #include "geometrycentral/pointcloud/point_position_normal_geometry.h"
@@ -120,6 +121,12 @@ const CloudCutLocusSolver& Cloud::cutLocusSolver() {
 const PointWinding& Cloud::winding() {
   if (!windingNumber) windingNumber = std::make_unique<PointWinding>(*this);
   return *windingNumber;
+}
+
+bool Cloud::inside(const geometrycentral::Vector3& p) {
+  if (!neighbourhood().noisyCloud()) return winding()(p) > 0.5;
+  if (!exterior) exterior = std::make_unique<ExteriorGrid>(neighbourhood().positions(), cloudFacts.meanSpacing);
+  return exterior->inside(p);
 }
 
 const std::vector<std::vector<uint32_t>>& Cloud::tuftedNeighbours() {

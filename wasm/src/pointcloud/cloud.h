@@ -15,6 +15,7 @@
 
 namespace cscd {
 
+class ExteriorGrid;
 class PointWinding;
 
 // A point cloud as it crosses the WASM boundary: xyz per point, and nx ny nz per point or nothing.
@@ -65,6 +66,10 @@ public:
   const CloudCutLocusSolver& cutLocusSolver();
   // Inside or outside the cloud (pointcloud/winding.h), built on first use.
   const PointWinding& winding();
+  // Whether p is inside the shape: the winding number over one half on a clean cloud; on a noisy one
+  // (CloudNeighbourhood::noisyCloud) not joined to the outside by empty space (pointcloud/exterior.h),
+  // since PCA normals cannot be oriented on parts as thin as the noise. Built on first use.
+  bool inside(const geometrycentral::Vector3& p);
   // The tufted triangulation's edges as each point's neighbours, each once (the cover repeats them): the
   // surface graph a loop's sides are flooded over (pointcloud/shorten.cpp), built on first use.
   const std::vector<std::vector<uint32_t>>& tuftedNeighbours();
@@ -82,6 +87,7 @@ private:
   std::unique_ptr<CloudNeighbourhood> neighbourGraph;
   std::unique_ptr<CloudCutLocusSolver> cutLocus;
   std::unique_ptr<PointWinding> windingNumber;
+  std::unique_ptr<ExteriorGrid> exterior;
   std::vector<std::vector<uint32_t>> tuftedAdjacency; // empty until first used
 };
 

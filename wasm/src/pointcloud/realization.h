@@ -14,8 +14,8 @@ namespace cscd {
 // MeshRealization). Stage 1 per source: the cloud's separator stages as far as the approximate loop
 // (pointcloud/separator.h), then the loop shortened on the MLS surface inside the paper's sphere
 // (pointcloud/shorten.h). Stage 2 uses the framework's steps on the cloud's points: overlap by distance
-// in space, regions grown over the neighbourhood graph from one multi-source heat distance, the winding
-// number of oriented points for the inside tests.
+// in space, regions grown over the neighbourhood graph from one multi-source heat distance, Cloud::inside
+// for the inside tests (the winding number of oriented points; on a noisy cloud the exterior flood).
 class PointCloudRealization {
 public:
   // A separator on the cloud: the loop also as its nearest cloud points, where regions and coverage
@@ -38,7 +38,7 @@ public:
   // The points, their areas and the neighbourhood graph's edges.
   const Samples& samples() const { return pointSamples; }
   size_t sourceCount() const { return pointSamples.positions.size(); }
-  bool inside(const geometrycentral::Vector3& p) const { return cloud.winding()(p) > 0.5; }
+  bool inside(const geometrycentral::Vector3& p) const { return cloud.inside(p); }
   void fitRadii(SkeletonGraph& graph) const;
 
 private:

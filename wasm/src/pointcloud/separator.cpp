@@ -107,7 +107,7 @@ CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, co
   if (!shorten) return result;
 
   result.score = separatorScore(result.areas, result.length);
-  result.centroidInside = cloud.winding()(loopCentroid(result.loop, true)) > 0.5;
+  result.centroidInside = cloud.inside(loopCentroid(result.loop, true));
   clock.lap("measures");
   return result;
 }

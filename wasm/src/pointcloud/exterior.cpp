@@ -1,0 +1,96 @@
+#include "pointcloud/exterior.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace geometrycentral;
+
+namespace cscd {
+namespace {
+
+// A grid of at most this many cubes (8 MB of flags): a cloud whose box holds more cubes of a spacing
+// (clusters far apart) gets cubes wider by kGrowth at a time, a coarser test.
+constexpr double kMaxCells = 8e6;
+constexpr double kGrowth = 1.25;
+// Empty cubes around the box, so that the border is outside wherever the cloud does not reach it.
+constexpr long kMargin = 2;
+
+} // namespace
+
+ExteriorGrid::ExteriorGrid(const std::vector<Vector3>& points, double spacing) {
+  Vector3 low{INFINITY, INFINITY, INFINITY}, high{-INFINITY, -INFINITY, -INFINITY};
+  for (const Vector3& p : points)
+    for (int a = 0; a < 3; a++) low[a] = std::min(low[a], p[a]), high[a] = std::max(high[a], p[a]);
+  cellSize = spacing;
+  auto cubes = [&] {
+    double count = 1;
+    for (int a = 0; a < 3; a++) count *= std::floor((high[a] - low[a]) / cellSize) + 1 + 2 * kMargin;
+    return count;
+  };
+  while (cubes() > kMaxCells) cellSize *= kGrowth;
+  for (int a = 0; a < 3; a++) dims[a] = long(std::floor((high[a] - low[a]) / cellSize)) + 1 + 2 * kMargin;
+  origin = low - double(kMargin) * cellSize * Vector3{1, 1, 1};
+
+  std::vector<uint8_t> solid(size_t(dims[0] * dims[1] * dims[2]), 0);
+  for (const Vector3& p : points) {
+    const std::array<long, 3> c = cellOf(p);
+    for (long dz = -1; dz <= 1; dz++)
+      for (long dy = -1; dy <= 1; dy++)
+        for (long dx = -1; dx <= 1; dx++) solid[cellIndex({c[0] + dx, c[1] + dy, c[2] + dz})] = 1;
+  }
+  // Flood the empty cubes from the border by face steps (a diagonal step could slip through the shell).
+  std::vector<uint8_t> outside(solid.size(), 0);
+  std::vector<size_t> stack;
+  auto reach = [&](std::array<long, 3> c) {
+    for (int a = 0; a < 3; a++)
+      if (c[a] < 0 || c[a] >= dims[a]) return;
+    const size_t i = cellIndex(c);
+    if (solid[i] || outside[i]) return;
+    outside[i] = 1;
+    stack.push_back(i);
+  };
+  for (long z = 0; z < dims[2]; z++)
+    for (long y = 0; y < dims[1]; y++)
+      for (long x = 0; x < dims[0]; x++)
+        if (x == 0 || y == 0 || z == 0 || x == dims[0] - 1 || y == dims[1] - 1 || z == dims[2] - 1) reach({x, y, z});
+  while (!stack.empty()) {
+    const size_t i = stack.back();
+    stack.pop_back();
+    const long x = long(i % size_t(dims[0])), y = long(i / size_t(dims[0]) % size_t(dims[1])), z = long(i / size_t(dims[0] * dims[1]));
+    reach({x - 1, y, z});
+    reach({x + 1, y, z});
+    reach({x, y - 1, z});
+    reach({x, y + 1, z});
+    reach({x, y, z - 1});
+    reach({x, y, z + 1});
+  }
+  // The outside grown back by the cube the shell was grown by (a closing): the cubes of the outer points
+  // stay inside, the ring the growth added does not.
+  inner.assign(solid.size(), 1);
+  for (long z = 0; z < dims[2]; z++)
+    for (long y = 0; y < dims[1]; y++)
+      for (long x = 0; x < dims[0]; x++) {
+        if (!outside[cellIndex({x, y, z})]) continue;
+        for (long dz = -1; dz <= 1; dz++)
+          for (long dy = -1; dy <= 1; dy++)
+            for (long dx = -1; dx <= 1; dx++) {
+              const std::array<long, 3> c{x + dx, y + dy, z + dz};
+              if (c[0] >= 0 && c[1] >= 0 && c[2] >= 0 && c[0] < dims[0] && c[1] < dims[1] && c[2] < dims[2]) inner[cellIndex(c)] = 0;
+            }
+      }
+}
+
+std::array<long, 3> ExteriorGrid::cellOf(const Vector3& p) const {
+  std::array<long, 3> c;
+  for (int a = 0; a < 3; a++) c[a] = long(std::floor((p[a] - origin[a]) / cellSize));
+  return c;
+}
+
+bool ExteriorGrid::inside(const Vector3& p) const {
+  const std::array<long, 3> c = cellOf(p);
+  for (int a = 0; a < 3; a++)
+    if (!(c[a] >= 0 && c[a] < dims[a])) return false;
+  return inner[cellIndex(c)];
+}
+
+} // namespace cscd

@@ -1,0 +1,35 @@
+#pragma once
+
+#include "geometrycentral/utilities/vector3.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace cscd {
+
+// Inside or outside a noisy cloud, without normals: a point is outside when empty space joins it to the
+// far side of the cloud's bounding box. Space is a grid of cubes about a spacing wide; a cube is solid
+// when it or one of its 26 neighbours holds a point of the cloud, so the noisy shell is closed; the
+// empty cubes reached from the box's border by face steps are the outside, every other cube inside (the
+// solid shell itself too: the axis of a leg as thin as the noise lies in it).
+//
+// Why not the winding number there: it needs normals of one orientation, and PCA normals on a part as
+// thin as the noise lie across it in any direction (docs/pointcloud.md, "Inside a noisy cloud").
+class ExteriorGrid {
+public:
+  ExteriorGrid(const std::vector<geometrycentral::Vector3>& points, double spacing);
+
+  bool inside(const geometrycentral::Vector3& p) const;
+
+private:
+  size_t cellIndex(std::array<long, 3> cell) const { return (size_t(cell[2]) * dims[1] + size_t(cell[1])) * dims[0] + size_t(cell[0]); }
+  std::array<long, 3> cellOf(const geometrycentral::Vector3& p) const;
+
+  geometrycentral::Vector3 origin;
+  double cellSize = 0;
+  std::array<long, 3> dims{};
+  std::vector<uint8_t> inner; // per cube: 0 where empty space joins it to the border, or next to such a cube
+};
+
+} // namespace cscd

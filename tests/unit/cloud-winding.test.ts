@@ -170,6 +170,7 @@ describe('inside a noisy cloud', () => {
       const inside = cloud.inside(deerNodes);
       expect(inside.filter((flag) => flag === 1).length / nodes).toBeGreaterThan(0.95);
       expect(share(cloud.windingNumbers(deerNodes), true)).toBeLessThan(0.5);
+      expect(Array.from(cloud.inside(Float64Array.from([NaN, 0, 0, 0, Infinity, 0])))).toEqual([0, 0]);
 
       // Beyond the noise, outside stays outside: points a tenth of the diagonal out from deer_clean's
       // surface that the clean cloud's winding number puts outside (8% inside measured: pockets between

@@ -21,7 +21,10 @@ ExteriorGrid::ExteriorGrid(const std::vector<Vector3>& points, double spacing) {
   Vector3 low{INFINITY, INFINITY, INFINITY}, high{-INFINITY, -INFINITY, -INFINITY};
   for (const Vector3& p : points)
     for (int a = 0; a < 3; a++) low[a] = std::min(low[a], p[a]), high[a] = std::max(high[a], p[a]);
-  cellSize = spacing;
+  // A spacing of 0 (every point on one spot) would make no grid: a 64th of the box instead, or 1.
+  double extent = 0;
+  for (int a = 0; a < 3; a++) extent = std::max(extent, high[a] - low[a]);
+  cellSize = spacing > 0 ? spacing : extent > 0 ? extent / 64 : 1;
   auto cubes = [&] {
     double count = 1;
     for (int a = 0; a < 3; a++) count *= std::floor((high[a] - low[a]) / cellSize) + 1 + 2 * kMargin;
@@ -87,6 +90,7 @@ std::array<long, 3> ExteriorGrid::cellOf(const Vector3& p) const {
 }
 
 bool ExteriorGrid::inside(const Vector3& p) const {
+  if (!isfinite(p)) return false;
   const std::array<long, 3> c = cellOf(p);
   for (int a = 0; a < 3; a++)
     if (!(c[a] >= 0 && c[a] < dims[a])) return false;

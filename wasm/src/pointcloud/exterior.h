@@ -11,8 +11,9 @@ namespace cscd {
 // Inside or outside a noisy cloud, without normals: a point is outside when empty space joins it to the
 // far side of the cloud's bounding box. Space is a grid of cubes about a spacing wide; a cube is solid
 // when it or one of its 26 neighbours holds a point of the cloud, so the noisy shell is closed; the
-// empty cubes reached from the box's border by face steps are the outside, every other cube inside (the
-// solid shell itself too: the axis of a leg as thin as the noise lies in it).
+// empty cubes reached from the box's border by face steps are the outside, grown back by the one cube
+// the shell was grown by (a closing); every other cube is inside, the cubes of the points included: the
+// axis of a leg as thin as the noise lies in them.
 //
 // Why not the winding number there: it needs normals of one orientation, and PCA normals on a part as
 // thin as the noise lie across it in any direction (docs/pointcloud.md, "Inside a noisy cloud").

@@ -7,6 +7,8 @@ import path from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadCoreNode, type Core } from '../../lib/core/node.ts';
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
+import { boundingBoxDiagonal } from '../../lib/io/repair.ts';
+import { parseSkeleton } from '../../lib/io/skeleton.ts';
 import { fixture, sharedData } from '../paths.ts';
 import { spherePoints } from './support/clouds.ts';
 
@@ -153,10 +155,10 @@ describe('inside a noisy cloud', () => {
   // deer_noise1.0: noise of 1% of the diagonal, about as thick as the deer's legs and antlers. PCA normals
   // there lie across the thin parts in any direction, and no orientation makes the winding number about 1
   // inside them; Cloud.inside floods the outside through the empty space of a grid instead.
-  const deerNodes = Float64Array.from(readFileSync(path.join(sharedData, 'reference_skeletons', 'deer_skeleton.obj'), 'utf8')
-    .split('\n').filter((line) => line.startsWith('v ')).flatMap((line) => line.trim().split(/\s+/).slice(1, 4).map(Number)));
+  const deerSkeleton = path.join(sharedData, 'reference_skeletons', 'deer_skeleton.obj');
+  const deerNodes = parseSkeleton(readFileSync(deerSkeleton), deerSkeleton).nodes;
   const clean = readCloud(path.join(sharedData, 'pointclouds', 'deer_clean.ply'));
-  const diagonal = 1.3757550026274132; // deer_clean's bounding-box diagonal
+  const diagonal = boundingBoxDiagonal(clean.positions);
   /** Every 5th of deer_clean's points moved `offset` diagonals along its outward (file) normal. */
   const outwards = (offset: number) => Float64Array.from({ length: 3 * Math.floor(clean.positions.length / 15) },
     (_, k) => clean.positions[15 * Math.floor(k / 3) + (k % 3)] + offset * diagonal * clean.normals![15 * Math.floor(k / 3) + (k % 3)]);

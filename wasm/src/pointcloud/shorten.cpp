@@ -382,8 +382,8 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
   IterateRecorder recorder(recordFrames);
   recorder.record(0, x);
   const double longestLoop = kMaxGrowth * loopLength(x);
-  bool diverged = false;
-  int gapSteps = 0; // consecutive steps after which a segment still crossed a gap
+  std::string givenUp; // why the loop was given up as not converging, if it was
+  int gapSteps = 0;    // consecutive steps after which a segment still crossed a gap
 
   Polyline trial;
   double step = 1;
@@ -428,11 +428,15 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
     result.iterations++;
     recorder.record(result.iterations, x);
     if (loopLength(x) > longestLoop) {
-      diverged = true;
+      givenUp = "the loop grew instead of shortening (the cloud's surface is too rough or sparse here)";
       break;
     }
     gapSteps = longestSegment(x) > kGapLength * spacing ? gapSteps + 1 : 0;
-    if (gapSteps == kMaxGapSteps) break;
+    if (gapSteps == kMaxGapSteps) {
+      givenUp = "the loop crosses a gap of the cloud: a segment stayed longer than " + std::to_string(int(kGapLength)) +
+                " spacings for " + std::to_string(kMaxGapSteps) + " steps";
+      break;
+    }
   }
   result.iterates = recorder.finish(result.iterations, x);
 
@@ -443,16 +447,9 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
     result.length = 0;
     return result;
   }
-  if (diverged) {
+  if (!givenUp.empty()) {
     result.failureKind = ShortenedCloudLoop::Failure::NotConverged;
-    result.failure = "the loop grew instead of shortening (the cloud's surface is too rough or sparse here)";
-    result.loop = x;
-    return result;
-  }
-  if (gapSteps == kMaxGapSteps) {
-    result.failureKind = ShortenedCloudLoop::Failure::NotConverged;
-    result.failure = "the loop crosses a gap of the cloud: a segment stayed longer than " + std::to_string(int(kGapLength)) +
-                     " spacings for " + std::to_string(kMaxGapSteps) + " steps";
+    result.failure = givenUp;
     result.loop = x;
     return result;
   }

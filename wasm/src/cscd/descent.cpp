@@ -18,20 +18,28 @@ size_t lowestOnArc(const std::vector<size_t>& ring, size_t begin, size_t count, 
 
 } // namespace
 
-std::vector<size_t> incomingNeighbours(const std::vector<size_t>& ring, const std::vector<double>& distance,
-                                       const CutLocus& cutLocus, size_t target) {
-  std::unordered_set<size_t> alongCutLocus;
+CutLocusNeighbours cutLocusNeighbours(const CutLocus& cutLocus) {
+  CutLocusNeighbours along;
   for (const auto& e : cutLocus.edges) {
-    size_t a = cutLocus.vertices[e[0]], b = cutLocus.vertices[e[1]];
-    if (a == target) alongCutLocus.insert(b);
-    if (b == target) alongCutLocus.insert(a);
+    const size_t a = cutLocus.vertices[e[0]], b = cutLocus.vertices[e[1]];
+    along[a].push_back(b);
+    along[b].push_back(a);
   }
+  return along;
+}
+
+std::vector<size_t> incomingNeighbours(const std::vector<size_t>& ring, const std::vector<double>& distance,
+                                       const CutLocusNeighbours& alongCutLocus, size_t target) {
   const size_t n = ring.size();
   if (n < 2) return {};
 
+  const auto listed = alongCutLocus.find(target);
+  auto onCutLocus = [&](size_t v) {
+    return listed != alongCutLocus.end() && std::find(listed->second.begin(), listed->second.end(), v) != listed->second.end();
+  };
   std::vector<size_t> cuts;
   for (size_t k = 0; k < n; k++)
-    if (alongCutLocus.count(ring[k])) cuts.push_back(k);
+    if (onCutLocus(ring[k])) cuts.push_back(k);
   if (cuts.size() < 2) {
     // Leave out the cut-locus neighbour (or, with none, the highest neighbour) and halve the rest.
     auto higher = [&](size_t a, size_t b) { return distance[a] < distance[b]; };

@@ -3,6 +3,7 @@
 #include "cscd/ridge_tree.h"
 
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace cscd {
@@ -22,12 +23,18 @@ struct TracedLoop {
   std::string failure; // why no loop could be traced; empty on success
 };
 
+// Every cut-locus vertex's neighbours along the cut locus (vertex indices), by vertex index: listed once
+// per cut locus, as a cloud looks at every cut-locus point as a target (scanning the edges for each cost
+// a noisy cloud's source 20-45 ms).
+using CutLocusNeighbours = std::unordered_map<size_t, std::vector<size_t>>;
+CutLocusNeighbours cutLocusNeighbours(const CutLocus& cutLocus);
+
 // The two neighbours of the target from which the wavefront arrived, on either side of the cut locus:
 // `ring` (the target's neighbours in their cyclic order around it) is split into arcs by the target's
 // cut-locus neighbours and the lowest vertex of the two lowest arcs is taken. At a branch end (one
 // cut-locus neighbour or none) the ring is halved opposite it. Empty when there are no two.
 std::vector<size_t> incomingNeighbours(const std::vector<size_t>& ring, const std::vector<double>& distance,
-                                       const CutLocus& cutLocus, size_t target);
+                                       const CutLocusNeighbours& alongCutLocus, size_t target);
 
 // Greedy descent (Alg. 3) from path.back(): always to the neighbour with the smallest distance (the
 // first one of equals, in the order forEachNeighbour(v, visit) visits them), until the source. False

@@ -21,7 +21,7 @@ TracedLoop traceApproximateLoop(ManifoldSurfaceMesh& mesh, const std::vector<dou
   TracedLoop traced;
   std::vector<size_t> ring;
   for (Vertex w : mesh.vertex(target).adjacentVertices()) ring.push_back(w.getIndex());
-  std::vector<size_t> starts = incomingNeighbours(ring, distance, cutLocus, target);
+  std::vector<size_t> starts = incomingNeighbours(ring, distance, cutLocusNeighbours(cutLocus), target);
   if (starts.size() != 2) {
     traced.failure = "no two incoming directions at the target";
     return traced;

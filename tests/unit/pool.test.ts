@@ -63,6 +63,38 @@ describe('stage 1 on a pool of worker threads', () => {
     expect(sources(1, false)).not.toBe(sources(4, false));
   }, 120_000);
 
+  it('gives a worker its next source before taking the candidate it answered', async () => {
+    // The accept covers and draws (a millisecond or two): the worker must not wait for it.
+    const events: string[] = [];
+    const worker: SeparatorWorker = {
+      separators: async (sources) => {
+        events.push(`give ${sources[0]}`);
+        return pool.workers[0].separators(sources);
+      },
+    };
+    const surface = core.openRefinedSurface(MESH);
+    const pipeline = surface.pipeline(OPTIONS);
+    const accept = pipeline.accept.bind(pipeline);
+    pipeline.accept = (records) => {
+      events.push(`accept ${records.map((r) => r.source).join(',')}`);
+      return accept(records);
+    };
+    try {
+      await runStage1(pipeline, [worker]);
+      expect(pipeline.finish().stats.n).toBe(12);
+    } finally {
+      pipeline.dispose();
+      surface.dispose();
+    }
+    const gives = events.filter((e) => e.startsWith('give'));
+    expect(gives).toHaveLength(12);
+    // One worker, one source at a time: before the k-th accept (from 0), the source it takes and the
+    // next one were given, k + 2 in all (but at the last, with no source left).
+    const accepts = events.flatMap((e, i) => (e.startsWith('accept') ? [i] : []));
+    expect(accepts).toHaveLength(12);
+    accepts.slice(0, -1).forEach((at, k) => expect(events.slice(0, at).filter((e) => e.startsWith('give')), events.slice(0, at + 1).join('; ')).toHaveLength(k + 2));
+  }, 120_000);
+
   it('hands the sources of a worker that fails to the others and reports it', async () => {
     const surface = core.openRefinedSurface(MESH);
     const alone = json(surface.skeleton(OPTIONS));

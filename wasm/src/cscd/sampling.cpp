@@ -9,21 +9,24 @@ namespace cscd {
 
 SourceSampler::SourceSampler(std::vector<Vector3> positions, std::vector<double> areas, double diagonal, uint32_t seed)
     : position(std::move(positions)), area(std::move(areas)), rng(seed), distance(area.size(), INFINITY),
-      nearUncovered(area.size(), INFINITY), nearestUncovered(area.size()), scale(diagonal / 10) {
+      nearUncovered(area.size(), INFINITY), nearUncoveredSquared(area.size(), INFINITY), nearestUncovered(area.size()),
+      weight(area.size()), weightedAway(area.size(), NAN), cumulative(area.size()), scale(diagonal / 10) {
   for (double a : area) totalArea += a;
 }
 
 size_t SourceSampler::next() {
   // Unreached vertices (nothing sampled yet in their component) get the largest finite weight.
   constexpr double kMaxExponent = 50;
-  std::vector<double> cumulative(area.size());
   double sum = 0;
   bool anyCovered = !uncovered.empty() || std::any_of(distance.begin(), distance.end(), [](double d) { return std::isfinite(d); });
   for (size_t v = 0; v < area.size(); v++) {
     const double away = std::min(distance[v], nearUncovered[v]);
-    double weight = area[v];
-    if (anyCovered) weight *= std::expm1(std::isfinite(away) ? std::min(away / scale, kMaxExponent) : kMaxExponent);
-    cumulative[v] = sum += weight;
+    // Most elements are as far as at the last draw: their weight is kept (no expm1 for them).
+    if (!(away == weightedAway[v])) {
+      weightedAway[v] = away;
+      weight[v] = area[v] * std::expm1(std::isfinite(away) ? std::min(away / scale, kMaxExponent) : kMaxExponent);
+    }
+    cumulative[v] = sum += anyCovered ? weight[v] : area[v];
   }
   // 53 random bits make a uniform double in [0, 1) the same way on every platform.
   double u = double((uint64_t(rng()) << 21) ^ uint64_t(rng() >> 11)) / 9007199254740992.0;
@@ -43,15 +46,19 @@ void SourceSampler::cover(const std::vector<double>& reach) {
   uncovered.pop_front();
   for (size_t v = 0; v < area.size(); v++) {
     if (!std::isfinite(nearUncovered[v]) || nearestUncovered[v] != gone) continue;
-    nearUncovered[v] = INFINITY;
+    nearUncovered[v] = nearUncoveredSquared[v] = INFINITY;
     for (size_t k = 0; k < uncovered.size(); k++) offerUncovered(v, firstUncovered + k);
   }
 }
 
 void SourceSampler::offerUncovered(size_t v, size_t serial) {
-  const double d = norm(position[v] - position[uncovered[serial - firstUncovered]]);
+  // Most elements are nearer to another uncovered source: compared squared, they need no square root.
+  const double squared = norm2(position[v] - position[uncovered[serial - firstUncovered]]);
+  if (!(squared < nearUncoveredSquared[v])) return;
+  const double d = std::sqrt(squared);
   if (d < nearUncovered[v]) {
     nearUncovered[v] = d;
+    nearUncoveredSquared[v] = squared;
     nearestUncovered[v] = serial;
   }
 }

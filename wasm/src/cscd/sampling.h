@@ -59,7 +59,13 @@ private:
   std::deque<size_t> uncovered;
   size_t firstUncovered = 0;
   std::vector<double> nearUncovered;
+  std::vector<double> nearUncoveredSquared; // its square, as computed (a square root of it gives nearUncovered)
   std::vector<size_t> nearestUncovered;
+  // Per element, its draw weight and the distance it was computed for (NaN: not yet), and the running
+  // sum of the weights a draw searches.
+  std::vector<double> weight;
+  std::vector<double> weightedAway;
+  std::vector<double> cumulative;
   double scale;
   double totalArea = 0;
 };

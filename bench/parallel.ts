@@ -4,9 +4,9 @@
 // machine affects both alike. Reports the times, their ratio, the caller's part and whether the two
 // skeletons are the same (they must be), as a table in bench/results/<date>-parallel.md.
 //
-//   npm run bench:parallel -- [--draw-ahead 4] [--workers 2] [--min-vertices 10000] [--repeat 1] [meshes...]
+//   npm run bench:parallel -- [--draw-ahead 4] [--workers 2] [--min-vertices 10000] [--repeats 1] [meshes...]
 //
-// With --repeat R each mesh runs R pairs (one thread, K threads, back to back) and each figure is the
+// With --repeats R each mesh runs R pairs (one thread, K threads, back to back) and each figure is the
 // median over its pairs: on a shared machine one pair moves by up to ±0.15 in speedup.
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
@@ -25,11 +25,11 @@ const { positionals, values } = parseArgs({
     'draw-ahead': { type: 'string', default: String(defaultOptions.drawAhead) },
     workers: { type: 'string', default: '2' },
     'min-vertices': { type: 'string', default: '10000' },
-    repeat: { type: 'string', default: '1' },
+    repeats: { type: 'string', default: '1' },
   },
 });
-const drawAhead = values['draw-ahead'], workers = values.workers, minVertices = Number(values['min-vertices']), repeat = Number(values.repeat);
-if (!(repeat >= 1)) throw new Error('--repeat must be a positive integer');
+const drawAhead = values['draw-ahead'], workers = values.workers, minVertices = Number(values['min-vertices']), repeats = Number(values.repeats);
+if (!(repeats >= 1)) throw new Error('--repeats must be a positive integer');
 const folder = path.resolve(repoRoot, '..', 'shared', 'data', 'meshes');
 const synthetic = path.resolve(repoRoot, '..', 'shared', 'data', 'synthetic');
 const all = [folder, synthetic].flatMap((d) => readdirSync(d).filter((f) => f.endsWith('.ply')).map((f) => path.join(d, f)));
@@ -64,7 +64,7 @@ const serialShares: number[] = [];
 const karpFlatt: number[] = [];
 const k = Number(workers);
 files.forEach(({ file, vertices }, i) => {
-  const pairs = Array.from({ length: repeat }, (_, r) => {
+  const pairs = Array.from({ length: repeats }, (_, r) => {
     const order = (i + r) % 2 === 0 ? ['1', workers] : [workers, '1'];
     const [a, b] = order.map((k) => run(file, k));
     return order[0] === '1' ? { one: a, many: b } : { one: b, many: a };
@@ -80,7 +80,7 @@ files.forEach(({ file, vertices }, i) => {
   serialShares.push(mid(({ one, many }) => many.serialSeconds / one.stage1Seconds));
   // Karp-Flatt: the serial fraction that would explain the measured speedup, the workers' waits included.
   karpFlatt.push((1 / speedup - 1 / k) / (1 - 1 / k));
-  const spread = repeat > 1 ? ` (${Math.min(...pairSpeedups).toFixed(2)}-${Math.max(...pairSpeedups).toFixed(2)})` : '';
+  const spread = repeats > 1 ? ` (${Math.min(...pairSpeedups).toFixed(2)}-${Math.max(...pairSpeedups).toFixed(2)})` : '';
   rows.push(`| ${path.basename(file, '.ply')} | ${vertices} | ${n} | ${mid((p) => p.one.seconds).toFixed(2)} | ${mid((p) => p.many.seconds).toFixed(2)} | ${mid((p) => p.one.stage1Seconds).toFixed(2)} | ${mid((p) => p.many.stage1Seconds).toFixed(2)} | ${speedup.toFixed(2)}${spread} | ${wholeRatios.at(-1)!.toFixed(2)} | ${(100 * serialShares.at(-1)!).toFixed(1)} | ${(100 * karpFlatt.at(-1)!).toFixed(1)} | ${Math.round(Math.max(...pairs.map((p) => p.many.memoryMB)))} | ${same ? 'yes' : '**no**'} |`);
   process.stdout.write(`${rows.at(-1)}\n`);
 });
@@ -94,8 +94,8 @@ const table = [
   `# Stage 1 on 1 and ${workers} threads, drawAhead ${drawAhead}`,
   '',
   `Machine: ${os.cpus().length} × ${cpu}, Node ${process.version}; load average (1, 5, 15 min) before the run ${loadBefore.map((l) => l.toFixed(2)).join(' ')}, after it ${os.loadavg().map((l) => l.toFixed(2)).join(' ')}.`,
-  `Command: \`node --import tsx bench/parallel.ts --draw-ahead ${drawAhead} --workers ${workers} --min-vertices ${minVertices} --repeat ${repeat}\`; default options otherwise (n auto); each run a process \`node ${COMPILED_CORE.join(' ')}\`, as in the main bench (the WebAssembly compiled whole before the clock starts: tiered up while it runs, its compiling would take a core from the workers).`,
-  ...(repeat > 1 ? [`Each mesh ran ${repeat} pairs (one thread and ${workers}, back to back, which first alternating); every figure is the median over its pairs, the stage-1 speedup with the pairs' lowest and highest.`] : []),
+  `Command: \`node --import tsx bench/parallel.ts --draw-ahead ${drawAhead} --workers ${workers} --min-vertices ${minVertices} --repeats ${repeats}\`; default options otherwise (n auto); each run a process \`node ${COMPILED_CORE.join(' ')}\`, as in the main bench (the WebAssembly compiled whole before the clock starts: tiered up while it runs, its compiling would take a core from the workers).`,
+  ...(repeats > 1 ? [`Each mesh ran ${repeats} pairs (one thread and ${workers}, back to back, which first alternating); every figure is the median over its pairs, the stage-1 speedup with the pairs' lowest and highest.`] : []),
   'Seconds: from the parsed mesh to the skeleton (the pool\'s opening included); stage 1: from the first draw to the last accept. MB per core: the peak memory of the calling thread\'s core in the pool run, which bounds each pool thread\'s (they hold the same mesh and solver and do less). Same: the skeleton JSON, timings aside.',
   '',
   `| mesh | vertices | N | seconds, 1 | seconds, ${workers} | stage 1, 1 | stage 1, ${workers} | stage-1 speedup | whole speedup | caller % | Karp-Flatt % | MB per core | same |`,

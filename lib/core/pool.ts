@@ -107,10 +107,14 @@ export async function runStage1(pipeline: Pipeline, workers: readonly SeparatorW
       throw error;
     }
   };
-  // The next queued source, sent to `worker` (undefined: none queued).
+  // The next queued source, sent to `worker` (undefined: none queued). Its answer may never be awaited
+  // (the run stopped, or an accept failed, while the worker held it): a failure of it is then nobody's.
   const give = (worker: SeparatorWorker) => {
     const i = queue.shift();
-    return i === undefined ? undefined : { i, work: worker.separators(Uint32Array.of(sources[i])) };
+    if (i === undefined) return undefined;
+    const work = worker.separators(Uint32Array.of(sources[i]));
+    work.catch(() => {});
+    return { i, work };
   };
   const lane = async (worker: SeparatorWorker) => {
     let held: ReturnType<typeof give>;
@@ -140,8 +144,6 @@ export async function runStage1(pipeline: Pipeline, workers: readonly SeparatorW
       }
       takeReady();
     }
-    // Stopped with a source still held (dropped by the auto stop): its answer is not waited for.
-    held?.work.catch(() => {});
   };
 
   drawMore();

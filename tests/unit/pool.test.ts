@@ -166,6 +166,18 @@ describe('stage 1 on a pool of worker threads', () => {
     } as unknown as Pipeline;
     const echo: SeparatorWorker = { separators: (sources) => Promise.resolve([...sources].map((source) => ({ source }) as CandidateRecord)) };
     await expect(runStage1(broken, [echo])).rejects.toThrow('the core refused the candidate');
+    // The worker already holds its next source when the accept fails; the pool closing then fails that
+    // request, which nobody awaits any more: no unhandled rejection (Vitest would report it).
+    let calls = 0;
+    const closing: SeparatorWorker = {
+      separators: (sources) =>
+        ++calls === 1
+          ? echo.separators(sources)
+          : new Promise((_, reject) => setTimeout(() => reject(new Error('worker thread stopped')), 10)),
+    };
+    await expect(runStage1(broken, [closing])).rejects.toThrow('the core refused the candidate');
+    expect(calls).toBe(2);
+    await new Promise((resolve) => setTimeout(resolve, 50));
   });
 
   it('stops at a cancel', async () => {

@@ -29,7 +29,7 @@ const { positionals, values } = parseArgs({
   },
 });
 const drawAhead = values['draw-ahead'], workers = values.workers, minVertices = Number(values['min-vertices']), repeats = Number(values.repeats);
-if (!(repeats >= 1)) throw new Error('--repeats must be a positive integer');
+if (!Number.isInteger(repeats) || repeats < 1) throw new Error('--repeats must be a positive integer');
 const folder = path.resolve(repoRoot, '..', 'shared', 'data', 'meshes');
 const synthetic = path.resolve(repoRoot, '..', 'shared', 'data', 'synthetic');
 const all = [folder, synthetic].flatMap((d) => readdirSync(d).filter((f) => f.endsWith('.ply')).map((f) => path.join(d, f)));

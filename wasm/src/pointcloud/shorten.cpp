@@ -1,6 +1,7 @@
 #include "pointcloud/shorten.h"
 
 #include "cscd/errors.h"
+#include "cscd/measures.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,6 +48,10 @@ constexpr int kMaxGapSteps = 20;
 // A loop shorter than this encloses nothing the cloud resolves: a tube that thin has under one spacing
 // of radius, and the mesh prunes loops shorter than 3 mean edge lengths by default (pruneLengthFactor).
 constexpr double kDegenerateLength = 3;
+// A loop on a noisy cloud whose sides meet even near it is measured by its plane, but only where the
+// surface's normals along it lie across that plane: their mean |cosine| with the plane's normal at most
+// that of random directions (sideAreas).
+constexpr double kMaxPlaneTilt = 0.5;
 
 using Polyline = std::vector<Vector3>;
 
@@ -233,7 +238,8 @@ bool needsResampling(const Polyline& loop, double spacing) {
 // loop only if both ends lie within |pq| of it, on its two sides, where the loop lies on the edge's
 // surface; on a noisy cloud it passes the edge up to the noise away, which a spacing more allows for.
 // The side of a point is that of the surface's direction across the loop at the nearest point of the loop. A loop whose sides meet is
-// measured, as on meshes, over the points within one loop radius of it along the edges (mesh/shorten.cpp).
+// measured, as on meshes, over the points within one loop radius of it along the edges (mesh/shorten.cpp),
+// and on a noisy cloud, where they meet there too, by its plane (splitByPlane below).
 std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop, const std::optional<Sphere>& sphere,
                                 double spacing) {
   const size_t n = loop.size(), pointCount = cloud.pointCount();
@@ -306,6 +312,24 @@ std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop,
     return separates;
   };
 
+  // On a noisy cloud the floods meet beside most loops: the points beside a loop lie up to the noise above
+  // and below the surface, as far off it as across the loop, so their side is noise and a flood steps over
+  // the loop through them. A loop that cuts across a part of the shape has the points of the region on
+  // either side of its plane as its sides; one around a bump of the noise, or so bent that its plane is
+  // no cut, has surface normals along it no more across its plane than random directions, and is left
+  // unmeasured (docs/pointcloud.md, "Sides of a loop on a noisy cloud").
+  auto splitByPlane = [&](std::array<double, 2>& area) {
+    const Polyline x = positionsOf(loop);
+    const Vector3 centre = loopCentroid(x, true), planeNormal = loopNormal(x);
+    double tilt = 0;
+    for (const MlsPoint& p : loop) tilt += std::abs(dot(p.normal, planeNormal));
+    if (tilt > kMaxPlaneTilt * double(n)) return false;
+    area = {0, 0};
+    for (size_t p = 0; p < pointCount; p++)
+      if (inRegion[p]) area[dot(positions[p] - centre, planeNormal) > 0] += pointAreas[p];
+    return true;
+  };
+
   std::array<double, 2> area;
   if (!flood(inRegion, area)) {
     // Around a handle that lies whole in the region: measure near the loop, within one loop radius along the edges.
@@ -327,7 +351,7 @@ std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop,
     }
     std::vector<char> near(pointCount);
     for (size_t p = 0; p < pointCount; p++) near[p] = along[p] <= radius;
-    if (!flood(near, area)) return {0, area[0] + area[1]};
+    if (!flood(near, area) && !(cloud.neighbourhood().noisyCloud() && splitByPlane(area))) return {0, area[0] + area[1]};
   }
   return {std::min(area[0], area[1]), std::max(area[0], area[1])};
 }

@@ -236,7 +236,8 @@ bool needsResampling(const Polyline& loop, double spacing) {
 // within a spacing of the loop) flooded from either side of the loop along the edges of the tufted
 // triangulation, never across the loop, each weighted by the area it stands for. An edge pq crosses the
 // loop only if both ends lie within |pq| of it, on its two sides, where the loop lies on the edge's
-// surface; on a noisy cloud it passes the edge up to the noise away, which a spacing more allows for.
+// surface; on a noisy cloud it passes the edge up to the noise away, which a spacing more allows for where
+// the noise is well under a spacing (beyond, splitByPlane below).
 // The side of a point is that of the surface's direction across the loop at the nearest point of the loop. A loop whose sides meet is
 // measured, as on meshes, over the points within one loop radius of it along the edges (mesh/shorten.cpp),
 // and on a noisy cloud, where they meet there too, by its plane (splitByPlane below).
@@ -351,7 +352,7 @@ std::array<double, 2> sideAreas(Cloud& cloud, const std::vector<MlsPoint>& loop,
     }
     std::vector<char> near(pointCount);
     for (size_t p = 0; p < pointCount; p++) near[p] = along[p] <= radius;
-    if (!flood(near, area) && !(cloud.neighbourhood().noisyCloud() && splitByPlane(area))) return {0, area[0] + area[1]};
+    if (!flood(near, area) && (!cloud.neighbourhood().noisyCloud() || !splitByPlane(area))) return {0, area[0] + area[1]};
   }
   return {std::min(area[0], area[1]), std::max(area[0], area[1])};
 }

@@ -307,6 +307,13 @@ describe('a loop around a finger of the hand cloud', () => {
     // Both sides inside the sphere have area: the finger towards its tip and the hand towards the palm.
     expect(result.areas[0]).toBeGreaterThan(100);
     expect(result.areas[1]).toBeGreaterThan(result.areas[0]);
+    // A clean cloud's loop moves on the blended fits of its nearest points, a cheaper surface than the MLS
+    // (MlsSurface::projectOnPatches): the two agree to a small share of a spacing.
+    const spacing = hand.facts.meanSpacing;
+    const onMls = pointsOf(hand.project(result.loop).points);
+    const offsets = pointsOf(result.loop).map((p, k) => distance(p, onMls[k]) / spacing);
+    expect(mean(offsets)).toBeLessThan(0.01);
+    expect(Math.max(...offsets)).toBeLessThan(0.05);
   });
 
   it('without the sphere, slides off the tapering finger and is reported degenerate (paper Sec. 4.1.6)', () => {

@@ -30,6 +30,16 @@ constexpr int kRounds = 3;
 // surface, so a query can move about 0.4 of that (over a spacing at k = 30) before it is refilled.
 constexpr size_t kCandidateFactor = 2;
 
+Eigen::Matrix<double, 6, 1> monomials(double u, double v) {
+  Eigen::Matrix<double, 6, 1> m;
+  m << 1, u, v, u * u, u * v, v * v;
+  return m;
+}
+
+// projectOnPatches blends the fits of this many nearest cloud points (16 gave rougher skeletons, not
+// smoother ones: docs/pointcloud.md, "Loops on patches").
+constexpr size_t kBlendedPatches = 8;
+
 Eigen::Vector3d toEigen(Vector3 v) { return {v.x, v.y, v.z}; }
 Vector3 fromEigen(const Eigen::Vector3d& v) { return Vector3{v.x(), v.y(), v.z()}; }
 
@@ -64,86 +74,127 @@ void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::v
   near.assign(cache->candidates.begin(), cache->candidates.begin() + k);
 }
 
+MlsSurface::Fit MlsSurface::fit(Vector3 at, const std::vector<size_t>& near) const {
+  Fit result;
+  double farthest2 = 0;
+  for (size_t i : near) farthest2 = std::max(farthest2, norm2(points[i] - at));
+  result.h = std::sqrt(farthest2) / 2;
+  const double h = result.h;
+  if (!(h > 0)) return result; // all k points coincide
+
+  // Weighted plane: centroid, then the covariance's least eigenvector as the normal.
+  const size_t k = near.size();
+  std::vector<double> weights(k);
+  double weightSum = 0, weightSquares = 0;
+  Vector3 centroid{0, 0, 0};
+  for (size_t j = 0; j < k; j++) {
+    // The Gaussian less its value at the farthest neighbour: a point entering or leaving the k nearest
+    // does so with weight 0, so the surface moves continuously with the query (a step of the loop's
+    // descent would otherwise jump by a share of the noise as neighbours change, and stall it).
+    weights[j] = std::exp(-norm2(points[near[j]] - at) / (h * h)) - kFarthestWeight;
+    weightSum += weights[j];
+    weightSquares += weights[j] * weights[j];
+    centroid += weights[j] * points[near[j]];
+  }
+  centroid /= weightSum;
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (size_t j = 0; j < k; j++) {
+    const Eigen::Vector3d d = toEigen(points[near[j]] - centroid);
+    covariance += weights[j] * d * d.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+  eigen.computeDirect(covariance);
+  result.centroid = centroid;
+  result.normal = fromEigen(eigen.eigenvectors().col(0)).normalize();
+  result.e1 = fromEigen(eigen.eigenvectors().col(2)).normalize();
+  result.e2 = cross(result.normal, result.e1);
+  if (weightSum * weightSum / weightSquares < kQuadraticMinEffectiveNeighbours) return result;
+
+  // Height over the plane: a weighted quadratic in coordinates scaled by h (so its system is of order 1).
+  std::vector<double> heights(k);
+  std::vector<Eigen::Matrix<double, 6, 1>> local(k); // the quadratic's monomials at each neighbour
+  Eigen::Matrix<double, 6, 6> system = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+  for (size_t j = 0; j < k; j++) {
+    const Vector3 d = points[near[j]] - centroid;
+    local[j] = monomials(dot(d, result.e1) / h, dot(d, result.e2) / h);
+    heights[j] = dot(d, result.normal);
+    system.selfadjointView<Eigen::Lower>().rankUpdate(local[j], weights[j]); // LDLT reads the lower half
+    rhs += weights[j] * heights[j] * local[j];
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(system);
+  if (solver.info() != Eigen::Success || !(solver.rcond() > kQuadraticMinRcond)) return result;
+  const Eigen::Matrix<double, 6, 1> a = solver.solve(rhs);
+  double planeResidual = 0, quadraticResidual = 0; // weighted sums of squares
+  for (size_t j = 0; j < k; j++) {
+    const double f = heights[j], r = f - a.dot(local[j]);
+    planeResidual += weights[j] * f * f;
+    quadraticResidual += weights[j] * r * r;
+  }
+  const double ratio = kQuadraticMaxResidualRatio;
+  if (quadraticResidual > ratio * ratio * planeResidual) return result;
+  result.quadratic = true;
+  result.a = a;
+  return result;
+}
+
+MlsPoint MlsSurface::Fit::at(Vector3 query) const {
+  const Vector3 fromCentroid = query - centroid;
+  Vector3 position = centroid + fromCentroid - dot(fromCentroid, normal) * normal;
+  if (!quadratic) return MlsPoint{position, normal, false};
+  const double uq = dot(fromCentroid, e1) / h, vq = dot(fromCentroid, e2) / h;
+  const double height = a.dot(monomials(uq, vq));
+  // Beyond a bandwidth from the plane, the quadratic extrapolates.
+  if (!(std::abs(height) <= h)) return MlsPoint{position, normal, false};
+  position += height * normal;
+  const double slopeU = (a[1] + 2 * a[3] * uq + a[4] * vq) / h, slopeV = (a[2] + a[4] * uq + 2 * a[5] * vq) / h;
+  return MlsPoint{position, (normal - slopeU * e1 - slopeV * e2).normalize(), true};
+}
+
 MlsPoint MlsSurface::project(Vector3 query, MlsNeighbourCache* cache) const {
   MlsPoint result{query, Vector3{0, 0, 1}, false};
   Vector3 at = query;
   const size_t k = std::min(neighbours, points.size());
-  std::vector<double> weights(k), heights(k); // heights over the plane
-  std::vector<Eigen::Matrix<double, 6, 1>> local(k); // the quadratic's monomials at each neighbour
   std::vector<size_t> near;
   for (int round = 0; round < kRounds; round++) {
     kNearest(at, k, cache, near);
-    double farthest2 = 0;
-    for (size_t i : near) farthest2 = std::max(farthest2, norm2(points[i] - at));
-    const double h = std::sqrt(farthest2) / 2;
-    if (!(h > 0)) return MlsPoint{points[near.front()], result.normal, false}; // all k points coincide
-
-    // Weighted plane: centroid, then the covariance's least eigenvector as the normal.
-    double weightSum = 0, weightSquares = 0;
-    Vector3 centroid{0, 0, 0};
-    for (size_t j = 0; j < near.size(); j++) {
-      // The Gaussian less its value at the farthest neighbour: a point entering or leaving the k nearest
-      // does so with weight 0, so the surface moves continuously with the query (a step of the loop's
-      // descent would otherwise jump by a share of the noise as neighbours change, and stall it).
-      weights[j] = std::exp(-norm2(points[near[j]] - at) / (h * h)) - kFarthestWeight;
-      weightSum += weights[j];
-      weightSquares += weights[j] * weights[j];
-      centroid += weights[j] * points[near[j]];
-    }
-    centroid /= weightSum;
-    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-    for (size_t j = 0; j < near.size(); j++) {
-      const Eigen::Vector3d d = toEigen(points[near[j]] - centroid);
-      covariance += weights[j] * d * d.transpose();
-    }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-    eigen.computeDirect(covariance);
-    const Vector3 normal = fromEigen(eigen.eigenvectors().col(0)).normalize();
-    const Vector3 e1 = fromEigen(eigen.eigenvectors().col(2)).normalize(), e2 = cross(normal, e1);
-
-    // Height over the plane: a weighted quadratic in coordinates scaled by h (so its system is of order 1).
-    auto monomials = [](double u, double v) {
-      Eigen::Matrix<double, 6, 1> m;
-      m << 1, u, v, u * u, u * v, v * v;
-      return m;
-    };
-    const Vector3 fromCentroid = query - centroid;
-    const double uq = dot(fromCentroid, e1) / h, vq = dot(fromCentroid, e2) / h;
-    Vector3 position = centroid + fromCentroid - dot(fromCentroid, normal) * normal, surfaceNormal = normal;
-    bool quadratic = false;
-    if (weightSum * weightSum / weightSquares >= kQuadraticMinEffectiveNeighbours) {
-      Eigen::Matrix<double, 6, 6> system = Eigen::Matrix<double, 6, 6>::Zero();
-      Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
-      for (size_t j = 0; j < near.size(); j++) {
-        const Vector3 d = points[near[j]] - centroid;
-        local[j] = monomials(dot(d, e1) / h, dot(d, e2) / h);
-        heights[j] = dot(d, normal);
-        system.selfadjointView<Eigen::Lower>().rankUpdate(local[j], weights[j]); // LDLT reads the lower half
-        rhs += weights[j] * heights[j] * local[j];
-      }
-      const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solver(system);
-      if (solver.info() == Eigen::Success && solver.rcond() > kQuadraticMinRcond) {
-        const Eigen::Matrix<double, 6, 1> a = solver.solve(rhs);
-        double planeResidual = 0, quadraticResidual = 0; // weighted sums of squares
-        for (size_t j = 0; j < near.size(); j++) {
-          const double f = heights[j], r = f - a.dot(local[j]);
-          planeResidual += weights[j] * f * f;
-          quadraticResidual += weights[j] * r * r;
-        }
-        const double height = a.dot(monomials(uq, vq));
-        const double ratio = kQuadraticMaxResidualRatio;
-        if (quadraticResidual <= ratio * ratio * planeResidual && std::abs(height) <= h) {
-          quadratic = true;
-          position += height * normal;
-          const double slopeU = (a[1] + 2 * a[3] * uq + a[4] * vq) / h, slopeV = (a[2] + a[4] * uq + 2 * a[5] * vq) / h;
-          surfaceNormal = (normal - slopeU * e1 - slopeV * e2).normalize();
-        }
-      }
-    }
-    result = MlsPoint{position, surfaceNormal, quadratic};
-    at = position;
+    const Fit around = fit(at, near);
+    if (!(around.h > 0)) return MlsPoint{points[near.front()], result.normal, false};
+    result = around.at(query);
+    at = result.position;
   }
   return result;
+}
+
+MlsPoint MlsSurface::projectOnPatches(Vector3 query, MlsNeighbourCache* cache) const {
+  if (patchOf.empty()) patchOf.assign(points.size(), kNoPatch);
+  const size_t k = std::min(neighbours, points.size()), blended = std::min(kBlendedPatches, points.size() - 1);
+  std::vector<size_t> near;
+  kNearest(query, blended + 1, cache, near);
+  // The weights are the fits' Gaussian, 0 at the first point left out: the blend moves continuously with the query.
+  const double outside2 = norm2(points[near.back()] - query);
+  Vector3 position{0, 0, 0}, normal{0, 0, 0};
+  double weightSum = 0;
+  size_t used = 0, quadratics = 0;
+  for (size_t j = 0; j < blended; j++) {
+    const size_t i = near[j];
+    if (patchOf[i] == kNoPatch) {
+      patchOf[i] = uint32_t(patches.size());
+      patches.push_back(fit(points[i], finder->kNearest(points[i], k)));
+    }
+    const Fit& patch = patches[patchOf[i]];
+    const double w = std::exp(-4 * norm2(points[i] - query) / outside2) - kFarthestWeight;
+    if (!(patch.h > 0) || !(w > 0)) continue;
+    const MlsPoint on = patch.at(query);
+    position += w * on.position;
+    // A fit's normal has no sign: each is turned to agree with the blend so far.
+    normal += w * (dot(on.normal, normal) < 0 ? -on.normal : on.normal);
+    weightSum += w;
+    used++;
+    quadratics += on.quadratic;
+  }
+  if (!(weightSum > 0)) return project(query, cache); // the nearest points all as far as the one left out
+  return MlsPoint{position / weightSum, normal.normalize(), 2 * quadratics > used};
 }
 
 size_t MlsSurface::nearestPoint(Vector3 query) const { return finder->kNearest(query, 1).front(); }

@@ -61,17 +61,29 @@ double loopLength(const Polyline& loop) {
   return length;
 }
 
-// Each point of the loop keeps its candidate neighbours between steps (it moves at most kMaxMove per
-// step): the projections are those without the caches, found without most of the kd-tree queries.
-using NeighbourCaches = std::vector<MlsNeighbourCache>;
+// Projects a loop's points on the cloud's surface. Each point keeps its candidate neighbours between
+// steps (it moves at most kMaxMove per step): the projections are those without the caches, found without
+// most of the kd-tree queries. On a clean cloud the points go on the blended fits of their nearest points
+// (MlsSurface::projectOnPatches), on a noisy one on the MLS surface itself: there the fits are planes whose
+// heights carry the noise, and a blend of a few of them is rough (docs/pointcloud.md, "Loops on patches").
+class LoopProjector {
+public:
+  LoopProjector(const MlsSurface& mls, bool onPatches) : mls(mls), onPatches(onPatches) {}
 
-std::vector<MlsPoint> projected(const MlsSurface& mls, const Polyline& points, NeighbourCaches& caches) {
-  caches.resize(points.size());
-  std::vector<MlsPoint> result;
-  result.reserve(points.size());
-  for (size_t i = 0; i < points.size(); i++) result.push_back(mls.project(points[i], &caches[i]));
-  return result;
-}
+  std::vector<MlsPoint> operator()(const Polyline& points) {
+    caches.resize(points.size());
+    std::vector<MlsPoint> result;
+    result.reserve(points.size());
+    for (size_t i = 0; i < points.size(); i++)
+      result.push_back(onPatches ? mls.projectOnPatches(points[i], &caches[i]) : mls.project(points[i], &caches[i]));
+    return result;
+  }
+
+private:
+  const MlsSurface& mls;
+  bool onPatches;
+  std::vector<MlsNeighbourCache> caches;
+};
 
 Polyline positionsOf(const std::vector<MlsPoint>& points) {
   Polyline result;
@@ -395,14 +407,13 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
 
   ShortenedCloudLoop result;
   const double spacing = cloud.facts().meanSpacing;
-  const MlsSurface& mls = cloud.mls();
+  LoopProjector projected(cloud.mls(), !cloud.neighbourhood().noisyCloud());
   const LoopEnergy energy{spacing, sphere};
-  NeighbourCaches caches;
   // The loop is the projection of its pre-images `y`, which the steps move: a step of length t then moves
   // the loop continuously from where it is, however noisy the cloud (projecting the projected loop again,
   // as each step once did, moves it a little there), and each step projects the loop once, not twice.
-  Polyline y = resampled(positionsOf(projected(mls, polyline, caches)), spacing);
-  std::vector<MlsPoint> loop = projected(mls, y, caches);
+  Polyline y = resampled(positionsOf(projected(polyline)), spacing);
+  std::vector<MlsPoint> loop = projected(y);
   Polyline x = positionsOf(loop);
   IterateRecorder recorder(recordFrames);
   recorder.record(0, x);
@@ -427,7 +438,7 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
       step = std::min(step, kMaxMove / longest);
       trial.resize(x.size());
       for (size_t i = 0; i < x.size(); i++) trial[i] = y[i] + step * spacing * direction[i];
-      next = projected(mls, trial, caches);
+      next = projected(trial);
       after = energy.value(positionsOf(next));
       if (after < before || halvings == kMaxHalvings) break;
       step /= 2;
@@ -442,12 +453,12 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
     x = positionsOf(loop);
     if (needsResampling(x, spacing)) {
       y = resampled(x, spacing);
-      loop = projected(mls, y, caches);
+      loop = projected(y);
       x = positionsOf(loop);
     } else if (farFromLoop(y, x, spacing)) {
       // Tangent steps on a curved surface take the pre-images away from it: they start again on the loop.
       y = x;
-      loop = projected(mls, y, caches);
+      loop = projected(y);
       x = positionsOf(loop);
     }
     result.iterations++;

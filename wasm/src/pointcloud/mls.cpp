@@ -74,7 +74,7 @@ void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::v
   near.assign(cache->candidates.begin(), cache->candidates.begin() + k);
 }
 
-MlsSurface::Fit MlsSurface::fit(Vector3 at, const std::vector<size_t>& near) const {
+MlsSurface::Fit MlsSurface::fit(Vector3 at, const std::vector<size_t>& near, bool tryQuadratic) const {
   Fit result;
   double farthest2 = 0;
   for (size_t i : near) farthest2 = std::max(farthest2, norm2(points[i] - at));
@@ -108,7 +108,7 @@ MlsSurface::Fit MlsSurface::fit(Vector3 at, const std::vector<size_t>& near) con
   result.normal = fromEigen(eigen.eigenvectors().col(0)).normalize();
   result.e1 = fromEigen(eigen.eigenvectors().col(2)).normalize();
   result.e2 = cross(result.normal, result.e1);
-  if (weightSum * weightSum / weightSquares < kQuadraticMinEffectiveNeighbours) return result;
+  if (!tryQuadratic || weightSum * weightSum / weightSquares < kQuadraticMinEffectiveNeighbours) return result;
 
   // Height over the plane: a weighted quadratic in coordinates scaled by h (so its system is of order 1).
   std::vector<double> heights(k);
@@ -151,14 +151,14 @@ MlsPoint MlsSurface::Fit::at(Vector3 query) const {
   return MlsPoint{position, (normal - slopeU * e1 - slopeV * e2).normalize(), true};
 }
 
-MlsPoint MlsSurface::project(Vector3 query, MlsNeighbourCache* cache) const {
+MlsPoint MlsSurface::project(Vector3 query, MlsNeighbourCache* cache, bool tryQuadratic) const {
   MlsPoint result{query, Vector3{0, 0, 1}, false};
   Vector3 at = query;
   const size_t k = std::min(neighbours, points.size());
   std::vector<size_t> near;
   for (int round = 0; round < kRounds; round++) {
     kNearest(at, k, cache, near);
-    const Fit around = fit(at, near);
+    const Fit around = fit(at, near, tryQuadratic);
     if (!(around.h > 0)) return MlsPoint{points[near.front()], result.normal, false};
     result = around.at(query);
     at = result.position;
@@ -180,7 +180,7 @@ MlsPoint MlsSurface::projectOnPatches(Vector3 query, MlsNeighbourCache* cache) c
     const size_t i = near[j];
     if (patchOf[i] == kNoPatch) {
       patchOf[i] = uint32_t(patches.size());
-      patches.push_back(fit(points[i], finder->kNearest(points[i], k)));
+      patches.push_back(fit(points[i], finder->kNearest(points[i], k), true));
     }
     const Fit& patch = patches[patchOf[i]];
     const double w = std::exp(-4 * norm2(points[i] - query) / outside2) - kFarthestWeight;

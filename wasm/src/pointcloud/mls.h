@@ -44,7 +44,8 @@ public:
   MlsSurface(std::vector<geometrycentral::Vector3> points, size_t neighbours);
 
   // With a cache, the k nearest points come from it while it holds them, and it is refilled when not.
-  MlsPoint project(geometrycentral::Vector3 query, MlsNeighbourCache* cache = nullptr) const;
+  // Without tryQuadratic, the plane alone: what a noisy cloud's fits come to anyway, found cheaper.
+  MlsPoint project(geometrycentral::Vector3 query, MlsNeighbourCache* cache = nullptr, bool tryQuadratic = true) const;
 
   // A cheaper surface through the same fits, for the loop's descent: each cloud point's fit (one round of
   // `project`'s, centred at the point) is made once and kept, and a query is projected on the fits of its
@@ -65,7 +66,7 @@ private:
     bool quadratic = false;
     MlsPoint at(geometrycentral::Vector3 query) const;
   };
-  Fit fit(geometrycentral::Vector3 at, const std::vector<size_t>& near) const;
+  Fit fit(geometrycentral::Vector3 at, const std::vector<size_t>& near, bool tryQuadratic) const;
 
   // The k nearest points of `at` into `near`, the nearest first.
   void kNearest(geometrycentral::Vector3 at, size_t k, MlsNeighbourCache* cache, std::vector<size_t>& near) const;

@@ -61,9 +61,9 @@ CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const Ml
     if (!isProjected[p]) projected[p] = mls.project(pointPositions[p]), isProjected[p] = 1;
     return projected[p];
   };
-  size_t sampled = 0, quadratic = 0;
-  for (size_t p = 0; p < n; p += kNoiseSampleStep, sampled++) quadratic += onMls(p).quadratic;
-  noisy = double(quadratic) < kMinQuadraticShare * double(sampled);
+  size_t sampled = 0;
+  for (size_t p = 0; p < n; p += kNoiseSampleStep, sampled++) sampledQuadratics += onMls(p).quadratic;
+  noisy = double(sampledQuadratics) < kMinQuadraticShare * double(sampled);
   auto leavesTangentPlane = [&](size_t a, size_t b) {
     if (!leaves(pointPositions[a], normals[a], pointPositions[b], normals[b], maxSine)) return false;
     if (!noisy || leaves(pointPositions[a], normals[a], pointPositions[b], normals[b], maxNoisySine)) return true;

@@ -39,6 +39,9 @@ public:
   // though they leave their ends' tangent planes.
   bool noisyCloud() const { return noisy; }
   size_t keptOnMls() const { return alongMls; }
+  // Whether the MLS surface's quadratic was fitted at any point of the noise test's sample (on the shared
+  // noisy clouds it was at none; on the trees' scans, at 9%).
+  bool curvatureSampled() const { return sampledQuadratics > 0; }
 
   const std::vector<geometrycentral::Vector3>& positions() const { return pointPositions; }
   const geometrycentral::Vector3& position(size_t p) const { return pointPositions[p]; }
@@ -55,6 +58,7 @@ private:
   size_t bridges = 0;
   size_t alongMls = 0;
   bool noisy = false;
+  size_t sampledQuadratics = 0;
   std::vector<geometrycentral::Vector3> pointPositions;
   std::vector<geometrycentral::Vector3> normals;
   std::vector<std::array<geometrycentral::Vector3, 2>> tangentBasis;

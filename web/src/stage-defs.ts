@@ -163,7 +163,7 @@ export const STAGES: readonly StageDef[] = [
     cloud: {
       section: 'Sec. 4.1.4–4.1.6 and App.',
       caption:
-        'The two paths joined give the approximate loop (orange). A cloud has no edges to flip (appendix "Curve Shortening using optimization based framework"): the loop is resampled to about one point spacing and moved by gradient descent of Σ H(|x_i − x_{i+1}|), H(s) = e^{s²} − 1, the gradient projected on the tangent planes, every step projected back onto the cloud\'s moving-least-squares surface, and a penalty (λ = 10) keeping it inside the constraint sphere. The thin lines are its recorded steps, the result is cyan; its score is A1 / (A2 · length), A1 ≤ A2 the areas on its two sides.',
+        'The two paths joined give the approximate loop (orange). A cloud has no edges to flip (appendix "Curve Shortening using optimization based framework"): the loop is resampled to about one point spacing and moved by gradient descent of Σ H(|x_i − x_{i+1}|), H(s) = e^{s²} − 1, the gradient projected on the tangent planes, every step projected back onto the cloud\'s surface (on a clean cloud the blended local fits of its nearest points, on a noisy one the moving-least-squares surface), and a penalty (λ = 10) keeping it inside the constraint sphere. The thin lines are its recorded steps, the result is cyan; its score is A1 / (A2 · length), A1 ≤ A2 the areas on its two sides.',
       click: PICK_POINT,
     },
   },

@@ -50,6 +50,11 @@ PointCloudRealization::Candidate PointCloudRealization::separator(size_t source)
     candidate.centroidInside = stages.centroidInside;
     for (const Vector3& p : candidate.loop) candidate.points.push_back(cloud.mls().nearestPoint(p));
   }
+  if (!candidate.found) {
+    // Only the source is covered: its distance is the one stage 1 started from (the same solve).
+    candidate.reach = std::move(stages.distance);
+    return candidate;
+  }
   std::vector<size_t> covered = candidate.points;
   covered.push_back(source);
   candidate.reach = cloud.geodesics().fromPoints(covered);

@@ -42,19 +42,17 @@ PointCloudRealization::Candidate PointCloudRealization::separator(size_t source)
   Candidate candidate;
   candidate.source = source;
   CloudSeparatorStages stages = computeCloudSeparatorStages(cloud, source, options);
-  if (stages.status == SeparatorStatus::Ok) {
-    candidate.found = true;
-    candidate.loop = std::move(stages.loop);
-    candidate.length = stages.length;
-    candidate.score = stages.score;
-    candidate.centroidInside = stages.centroidInside;
-    for (const Vector3& p : candidate.loop) candidate.points.push_back(cloud.mls().nearestPoint(p));
-  }
-  if (!candidate.found) {
+  if (stages.status != SeparatorStatus::Ok) {
     // Only the source is covered: its distance is the one stage 1 started from (the same solve).
     candidate.reach = std::move(stages.distance);
     return candidate;
   }
+  candidate.found = true;
+  candidate.loop = std::move(stages.loop);
+  candidate.length = stages.length;
+  candidate.score = stages.score;
+  candidate.centroidInside = stages.centroidInside;
+  for (const Vector3& p : candidate.loop) candidate.points.push_back(cloud.mls().nearestPoint(p));
   std::vector<size_t> covered = candidate.points;
   covered.push_back(source);
   candidate.reach = cloud.geodesics().fromPoints(covered);

@@ -102,8 +102,16 @@ describe('geodesic distance on a cloud', () => {
     expect(sum / count).toBeLessThan(0.035);
   });
 
-  it('is geometry-central’s PointCloudHeatSolver’s, to the last bit', () => {
-    for (const source of [0, 1000]) expect(bobCloud.distance(source)).toEqual(bobCloud.referenceDistance(source));
+  it('is geometry-central’s PointCloudHeatSolver’s, up to the rounding of summing copies of a face once', () => {
+    // Copies of one tufted face are summed once with their count as weight (geodesics/heat_distance.cpp):
+    // the same arithmetic in another order. Measured 2026-12-05: at most 2.4e-15 of the largest distance.
+    for (const source of [0, 1000]) {
+      const ours = bobCloud.distance(source), reference = bobCloud.referenceDistance(source);
+      const largest = Math.max(...reference);
+      let worst = 0;
+      for (let i = 0; i < ours.length; i++) worst = Math.max(worst, Math.abs(ours[i] - reference[i]));
+      expect(worst).toBeLessThan(1e-12 * largest);
+    }
   });
 
   it('from several points is near the least of their distances, near 0 at each', () => {

@@ -5,11 +5,54 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 using namespace geometrycentral;
 using namespace geometrycentral::surface;
 
 namespace cscd {
+
+namespace {
+
+// A cloud's tufted cover holds most triangles several times over (both sheets of each local triangulation
+// that has it: 240,000 faces for 20,000 points, 65,000 distinct), and copies of one triangle, the same
+// corners joined by edges of the same lengths, add the same divergence in every solve. Per face: how many
+// copies it stands for (its weights are multiplied by that), 0 for a copy of an earlier face. A mesh's
+// intrinsic triangulation has no copies (all 1).
+std::vector<int> faceCopies(IntrinsicGeometryInterface& geometry) {
+  struct Copy {
+    std::array<double, 6> key; // the corners' vertex indices, increasing, and the lengths of the edges between them
+    uint32_t face;
+    bool operator<(const Copy& other) const { return std::tie(key, face) < std::tie(other.key, other.face); }
+  };
+  std::vector<Copy> distinctCorners;
+  for (Face f : geometry.mesh.faces()) {
+    std::array<size_t, 3> corner;
+    std::array<double, 3> length; // of the edge from corner i to corner i + 1
+    int k = 0;
+    for (Halfedge he : f.adjacentHalfedges()) {
+      corner[k] = geometry.vertexIndices[he.vertex()];
+      length[k++] = geometry.edgeLengths[he.edge()];
+    }
+    if (corner[0] == corner[1] || corner[1] == corner[2] || corner[0] == corner[2]) continue;
+    std::array<int, 3> order{0, 1, 2};
+    std::sort(order.begin(), order.end(), [&](int i, int j) { return corner[i] < corner[j]; });
+    auto between = [&](int i, int j) { return length[j == (i + 1) % 3 ? i : j]; };
+    distinctCorners.push_back({{double(corner[order[0]]), double(corner[order[1]]), double(corner[order[2]]),
+                                between(order[0], order[1]), between(order[1], order[2]), between(order[0], order[2])},
+                               uint32_t(f.getIndex())});
+  }
+  std::sort(distinctCorners.begin(), distinctCorners.end());
+  std::vector<int> copies(geometry.mesh.nFaces(), 1);
+  for (size_t first = 0, next; first < distinctCorners.size(); first = next) {
+    for (next = first + 1; next < distinctCorners.size() && distinctCorners[next].key == distinctCorners[first].key; next++)
+      copies[distinctCorners[next].face] = 0;
+    copies[distinctCorners[first].face] = int(next - first);
+  }
+  return copies;
+}
+
+} // namespace
 
 HeatDistance::HeatDistance(IntrinsicGeometryInterface& geometry_, std::vector<int> vertexComponent_)
     : geometry(geometry_), vertexComponent(std::move(vertexComponent_)) {
@@ -32,7 +75,10 @@ HeatDistance::HeatDistance(IntrinsicGeometryInterface& geometry_, std::vector<in
   SparseMatrix<double> shifted = L + 1e-6 * identityMatrix<double>(mesh.nVertices());
   poissonSolver = std::make_unique<OrderedLDLT>(shifted);
 
+  const std::vector<int> copies = faceCopies(geometry);
   for (Face f : mesh.faces()) {
+    const int copiesOfFace = copies[f.getIndex()];
+    if (copiesOfFace == 0) continue;
     FaceOperators& ops = faces.emplace_back();
     int k = 0;
     for (Halfedge he : f.adjacentHalfedges()) {
@@ -41,7 +87,7 @@ HeatDistance::HeatDistance(IntrinsicGeometryInterface& geometry_, std::vector<in
       ops.inPoisson[k] = poissonSolver->position(vertex);
       ops.heatGradient[k] = geometry.halfedgeVectorsInFace[he.next()].rotate90();
       ops.halfedge[k] = geometry.halfedgeVectorsInFace[he];
-      ops.cotanWeight[k] = geometry.halfedgeCotanWeights[he];
+      ops.cotanWeight[k] = copiesOfFace * geometry.halfedgeCotanWeights[he];
       k++;
     }
   }

@@ -41,7 +41,8 @@ PointCloudRealization::PointCloudRealization(Cloud& cloud_, const Options& optio
 PointCloudRealization::Candidate PointCloudRealization::separator(size_t source) {
   Candidate candidate;
   candidate.source = source;
-  CloudSeparatorStages stages = computeCloudSeparatorStages(cloud, source, options);
+  CloudSeparatorStages stages =
+      computeCloudSeparatorStages(cloud, source, options, /*shorten=*/true, /*recordFrames=*/0, /*everyAngle=*/false);
   if (stages.status != SeparatorStatus::Ok) {
     // Only the source is covered: its distance is the one stage 1 started from (the same solve).
     candidate.reach = std::move(stages.distance);

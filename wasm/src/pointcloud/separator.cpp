@@ -61,7 +61,7 @@ SeparatorStatus loopThrough(Cloud& cloud, size_t source, const CloudTarget& targ
 } // namespace
 
 CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options, bool shorten,
-                                                 int recordFrames) {
+                                                 int recordFrames, bool everyAngle) {
   CloudSeparatorStages result;
   result.source = source;
   StageClock clock(result.timings);
@@ -70,7 +70,9 @@ CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, co
   clock.lap("distance");
 
   const CloudCutLocusSolver& solver = cloud.cutLocusSolver();
-  result.cutLocus = solver.compute(result.distance, source, cutLocusOptionsOf(options));
+  CutLocusOptions cutLocusOptions = cutLocusOptionsOf(options);
+  cutLocusOptions.everyAngle = everyAngle;
+  result.cutLocus = solver.compute(result.distance, source, cutLocusOptions);
   clock.lap("cutLocus");
 
   const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();

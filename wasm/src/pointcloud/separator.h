@@ -44,7 +44,8 @@ struct CloudSeparatorStages {
 
 // `shorten` false: stop at the approximate loop (the cut-locus views and tests need no more).
 // `recordFrames` > 0 keeps that many of the shortening's steps for the page to show (shortenLoop).
+// `everyAngle`: the cut locus's angle field complete (teaching views) or only where its threshold looks.
 CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, const Options& options, bool shorten = true,
-                                                 int recordFrames = 0);
+                                                 int recordFrames = 0, bool everyAngle = true);
 
 } // namespace cscd

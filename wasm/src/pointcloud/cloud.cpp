@@ -98,14 +98,19 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   geodesicSolver = std::make_unique<CloudGeodesics>(tufted, component);
 
   std::vector<Vector3> points(n);
+  std::vector<uint32_t> nearestOthers;
+  nearestOthers.reserve(n * size_t(neighbours));
   areas.assign(n, 0);
   for (size_t p = 0; p < n; p++) {
     points[p] = positions[p];
     double farthest2 = 0;
-    for (Point q : cloudGeometry->neighbors->neighbors[p]) farthest2 = std::max(farthest2, norm2(positions[q] - positions[p]));
+    for (Point q : cloudGeometry->neighbors->neighbors[p]) {
+      farthest2 = std::max(farthest2, norm2(positions[q] - positions[p]));
+      nearestOthers.push_back(uint32_t(q.getIndex()));
+    }
     areas[p] = M_PI * farthest2 / neighbours;
   }
-  mlsSurface = std::make_unique<MlsSurface>(std::move(points), size_t(neighbours));
+  mlsSurface = std::make_unique<MlsSurface>(std::move(points), size_t(neighbours), std::move(nearestOthers));
 }
 
 const CloudNeighbourhood& Cloud::neighbourhood() {

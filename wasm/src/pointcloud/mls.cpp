@@ -45,8 +45,9 @@ Vector3 fromEigen(const Eigen::Vector3d& v) { return Vector3{v.x(), v.y(), v.z()
 
 } // namespace
 
-MlsSurface::MlsSurface(std::vector<Vector3> points_, size_t neighbours_)
-    : points(std::move(points_)), neighbours(neighbours_), finder(std::make_unique<NearestNeighborFinder>(points)) {}
+MlsSurface::MlsSurface(std::vector<Vector3> points_, size_t neighbours_, std::vector<uint32_t> nearestOthers_)
+    : points(std::move(points_)), neighbours(neighbours_), nearestOthers(std::move(nearestOthers_)),
+      finder(std::make_unique<NearestNeighborFinder>(points)) {}
 
 void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::vector<size_t>& near) const {
   if (!cache) {
@@ -179,8 +180,11 @@ MlsPoint MlsSurface::projectOnPatches(Vector3 query, MlsNeighbourCache* cache) c
   for (size_t j = 0; j < blended; j++) {
     const size_t i = near[j];
     if (patchOf[i] == kNoPatch) {
+      // The point and its k - 1 nearest others: its k nearest, as the kd-tree would list them.
+      std::vector<size_t> own{i};
+      own.insert(own.end(), nearestOthers.begin() + i * neighbours, nearestOthers.begin() + i * neighbours + (k - 1));
       patchOf[i] = uint32_t(patches.size());
-      patches.push_back(fit(points[i], finder->kNearest(points[i], k), true));
+      patches.push_back(fit(points[i], own, true));
     }
     const Fit& patch = patches[patchOf[i]];
     const double w = std::exp(-4 * norm2(points[i] - query) / outside2) - kFarthestWeight;

@@ -41,7 +41,9 @@ struct MlsNeighbourCache {
 
 class MlsSurface {
 public:
-  MlsSurface(std::vector<geometrycentral::Vector3> points, size_t neighbours);
+  // nearestOthers: each point's k = `neighbours` nearest other points, nearest first, k entries a point
+  // (the cloud's neighbour lists, from the same search the surface's own kd-tree makes).
+  MlsSurface(std::vector<geometrycentral::Vector3> points, size_t neighbours, std::vector<uint32_t> nearestOthers);
 
   // With a cache, the k nearest points come from it while it holds them, and it is refilled when not.
   // Without tryQuadratic, the plane alone: what a noisy cloud's fits come to anyway, found cheaper.
@@ -73,6 +75,7 @@ private:
 
   std::vector<geometrycentral::Vector3> points;
   size_t neighbours;
+  std::vector<uint32_t> nearestOthers;
   // Its queries are not const, though they change nothing we can see.
   std::unique_ptr<geometrycentral::NearestNeighborFinder> finder;
   // The fits of the points whose patches were used, made on first use (loops visit a small part of a large

@@ -54,14 +54,15 @@ void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::v
     near = finder->kNearest(at, k);
     return;
   }
+  std::vector<std::pair<double, size_t>>& byDistance = cache->byDistance;
   if (cache->reach >= 0) {
-    std::vector<std::pair<double, size_t>>& byDistance = cache->byDistance;
-    byDistance.clear();
-    for (size_t i : cache->candidates) byDistance.push_back({norm2(points[i] - at), i});
-    // The k nearest in order: selected, then sorted (a heap's partial sort of all candidates cost twice as much).
-    std::nth_element(byDistance.begin(), byDistance.begin() + (k - 1), byDistance.end());
+    // The candidates in the order of the last query's distances, sorted again: nearby queries order them
+    // nearly alike, so an insertion sort moves few (a selection and a sort of the k cost 4 times as much on
+    // a noisy cloud). The order of (distance, index) pairs is total: the k first are those a sort would give.
+    for (auto& [distance2, i] : byDistance) distance2 = norm2(points[i] - at);
+    for (size_t j = 1; j < byDistance.size(); j++)
+      for (size_t m = j; m > 0 && byDistance[m] < byDistance[m - 1]; m--) std::swap(byDistance[m], byDistance[m - 1]);
     if (std::sqrt(byDistance[k - 1].first) + norm(at - cache->centre) < cache->reach) {
-      std::sort(byDistance.begin(), byDistance.begin() + k);
       near.resize(k);
       for (size_t j = 0; j < k; j++) near[j] = byDistance[j].second;
       return;
@@ -69,10 +70,14 @@ void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::v
   }
   const size_t count = std::min(kCandidateFactor * k, points.size());
   cache->centre = at;
-  cache->candidates = finder->kNearest(at, count);
+  const std::vector<size_t> candidates = finder->kNearest(at, count);
   // Every point left out is at least as far as the farthest candidate; all of them are in when count is every point.
-  cache->reach = count == points.size() ? INFINITY : norm(points[cache->candidates.back()] - at);
-  near.assign(cache->candidates.begin(), cache->candidates.begin() + k);
+  cache->reach = count == points.size() ? INFINITY : norm(points[candidates.back()] - at);
+  byDistance.clear();
+  for (size_t i : candidates) byDistance.push_back({norm2(points[i] - at), i});
+  std::sort(byDistance.begin(), byDistance.end());
+  near.resize(k);
+  for (size_t j = 0; j < k; j++) near[j] = byDistance[j].second;
 }
 
 MlsSurface::Fit MlsSurface::fit(Vector3 at, const std::vector<size_t>& near, bool tryQuadratic) const {

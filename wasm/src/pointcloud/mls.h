@@ -35,8 +35,8 @@ struct MlsPoint {
 struct MlsNeighbourCache {
   geometrycentral::Vector3 centre{0, 0, 0};
   double reach = -1; // none yet
-  std::vector<size_t> candidates;
-  std::vector<std::pair<double, size_t>> byDistance; // scratch of the queries, kept to spare allocations
+  // The candidates with their squared distances from the last query, nearest first.
+  std::vector<std::pair<double, size_t>> byDistance;
 };
 
 class MlsSurface {

@@ -21,15 +21,16 @@ CloudSeparatorStages& fail(CloudSeparatorStages& result, SeparatorStatus status,
 
 // Trace the loop through one target and shorten it (unless `shorten` is false); returns the failure
 // status, or Ok. Every per-attempt field is set afresh, so a result never mixes two attempts.
-SeparatorStatus loopThrough(Cloud& cloud, size_t source, const CloudTarget& target, const Options& options, bool shorten,
-                            int recordFrames, CloudSeparatorStages& result) {
+SeparatorStatus loopThrough(Cloud& cloud, PathsToSource& toSource, const CloudTarget& target, const Options& options,
+                            bool shorten, int recordFrames, CloudSeparatorStages& result) {
+  const size_t source = toSource.source();
   const CloudNeighbourhood& neighbourhood = cloud.neighbourhood();
   result.target = target.point;
   result.sphere.reset();
   result.loop.clear();
   result.iterates.clear();
   result.iterations = 0;
-  result.traced = traceCloudLoop(neighbourhood.graph(), neighbourhood.positions(), result.distance, target.point, target.starts, source);
+  result.traced = traceCloudLoop(neighbourhood.graph(), result.distance, target.point, target.starts, toSource);
   result.message = result.traced.failure;
   if (!result.traced.failure.empty()) return SeparatorStatus::TraceFailed;
   if (!shorten) return SeparatorStatus::Ok;
@@ -95,12 +96,13 @@ CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, co
   const bool fallBack = neighbourhood.noisyCloud();
   SeparatorStatus status = SeparatorStatus::Ok;
   double lastFailedKey = 0;
+  PathsToSource toSource(neighbourhood.graph(), neighbourhood.positions(), source);
   for (const CloudTarget& t : targets) {
     if (result.attempts == kMaxTargets) break;
     const double key = targetKey(neighbourhood.positions(), result.distance, source, t.point, options.target);
     if (fallBack && result.attempts > 0 && key < kFallbackGrowth * lastFailedKey) continue;
     result.attempts++;
-    status = loopThrough(cloud, source, t, options, shorten, recordFrames, result);
+    status = loopThrough(cloud, toSource, t, options, shorten, recordFrames, result);
     if (status == SeparatorStatus::Ok || (!fallBack && status != SeparatorStatus::TraceFailed)) break;
     lastFailedKey = key;
   }

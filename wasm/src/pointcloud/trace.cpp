@@ -7,40 +7,35 @@
 #include <unordered_map>
 
 namespace cscd {
-namespace {
-
-// Shortest paths to the source along the graph's edges (Dijkstra, Euclidean lengths): each point's next
-// point towards the source, kNoParent where the source is not reached.
-std::vector<size_t> towardsSource(const NeighbourGraph& graph, const std::vector<geometrycentral::Vector3>& positions,
-                                  size_t source) {
-  const size_t n = graph.vertexCount();
-  std::vector<double> length(n, INFINITY);
-  std::vector<size_t> next(n, kNoParent);
-  using Entry = std::pair<double, size_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
-  frontier.push({length[source] = 0, source});
-  while (!frontier.empty()) {
-    const auto [d, p] = frontier.top();
-    frontier.pop();
-    if (d > length[p]) continue;
-    for (size_t k = graph.rowStart[p]; k < graph.rowStart[p + 1]; k++) {
-      const size_t q = graph.neighbour[k];
-      const double through = d + norm(positions[p] - positions[q]);
-      if (through < length[q]) {
-        length[q] = through;
-        next[q] = p;
-        frontier.push({through, q});
+size_t PathsToSource::next(size_t point) {
+  if (nextPoint.empty()) {
+    const size_t n = graph.vertexCount();
+    std::vector<double> length(n, INFINITY);
+    nextPoint.assign(n, kNoParent);
+    using Entry = std::pair<double, size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> frontier;
+    frontier.push({length[source_] = 0, source_});
+    while (!frontier.empty()) {
+      const auto [d, p] = frontier.top();
+      frontier.pop();
+      if (d > length[p]) continue;
+      for (size_t k = graph.rowStart[p]; k < graph.rowStart[p + 1]; k++) {
+        const size_t q = graph.neighbour[k];
+        const double through = d + norm(positions[p] - positions[q]);
+        if (through < length[q]) {
+          length[q] = through;
+          nextPoint[q] = p;
+          frontier.push({through, q});
+        }
       }
     }
   }
-  return next;
+  return nextPoint[point];
 }
 
-} // namespace
-
-TracedLoop traceCloudLoop(const NeighbourGraph& graph, const std::vector<geometrycentral::Vector3>& positions,
-                          const std::vector<double>& distance, size_t target, std::array<size_t, 2> starts,
-                          size_t source) {
+TracedLoop traceCloudLoop(const NeighbourGraph& graph, const std::vector<double>& distance, size_t target,
+                          std::array<size_t, 2> starts, PathsToSource& toSource) {
+  const size_t source = toSource.source();
   auto forEachNeighbour = [&](size_t p, auto&& visit) {
     for (size_t k = graph.rowStart[p]; k < graph.rowStart[p + 1]; k++) visit(graph.neighbour[k]);
   };
@@ -49,15 +44,13 @@ TracedLoop traceCloudLoop(const NeighbourGraph& graph, const std::vector<geometr
   // of deer_noise1.0 found no loop so). From there the path follows the graph's shortest path towards the
   // source until the distance is below where it stopped, and descends again; a point it meets again cuts
   // the path back to it, so the path never crosses itself.
-  std::vector<size_t> shortest;
   auto descendToSource = [&](std::vector<size_t>& path) {
     while (!descend(forEachNeighbour, distance, source, path)) {
-      if (shortest.empty()) shortest = towardsSource(graph, positions, source);
       const double stuck = distance[path.back()];
       std::unordered_map<size_t, size_t> at;
       for (size_t i = 0; i < path.size(); i++) at[path[i]] = i;
       do {
-        const size_t next = shortest[path.back()];
+        const size_t next = toSource.next(path.back());
         if (next == kNoParent) return false;
         const auto seen = at.find(next);
         if (seen != at.end()) {

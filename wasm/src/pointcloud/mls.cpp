@@ -57,8 +57,8 @@ void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::v
   std::vector<std::pair<double, size_t>>& byDistance = cache->byDistance;
   if (cache->reach >= 0) {
     // The candidates in the order of the last query's distances, sorted again: nearby queries order them
-    // nearly alike, so an insertion sort moves few (a selection and a sort of the k cost 4 times as much on
-    // a noisy cloud). The order of (distance, index) pairs is total: the k first are those a sort would give.
+    // nearly alike, so an insertion sort moves few (a selection and a sort of the k were over a tenth of a
+    // noisy cloud's run). The order of (distance, index) pairs is total: the k first are those a sort gives.
     for (auto& [distance2, i] : byDistance) distance2 = norm2(points[i] - at);
     for (size_t j = 1; j < byDistance.size(); j++)
       for (size_t m = j; m > 0 && byDistance[m] < byDistance[m - 1]; m--) std::swap(byDistance[m], byDistance[m - 1]);

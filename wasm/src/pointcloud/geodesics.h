@@ -13,8 +13,9 @@ namespace cscd {
 // length (the mean spacing of neighbouring points), also the default of geometry-central's
 // PointCloudHeatSolver. Prefactored once per cloud; each query costs two back-substitutions.
 //
-// The same numbers as PointCloudHeatSolver's up to rounding (2e-15 of the largest distance,
-// tests/unit/cloud-geodesics.test.ts: copies of a tufted face are summed once), whose robust option copies the tufted triangulation and mollifies and flips it again to no effect.
+// The same numbers as PointCloudHeatSolver's up to rounding (2.4e-15 of the largest distance,
+// tests/unit/cloud-geodesics.test.ts: copies of a tufted face are summed once), whose robust option
+// copies the tufted triangulation and mollifies and flips it again to no effect.
 // Not using that class keeps one triangulation in memory, factors when the cloud is opened (as a
 // mesh's Surface does), solves each component on its own, and leaves the scalar solver alone when a
 // vector heat solver is added later (PointCloudHeatSolver rebuilds and refactors it then).

@@ -32,6 +32,12 @@ double smallestCosine(const std::vector<std::array<double, 2>>& ring) {
   return smallest;
 }
 
+double ringAngle(double smallestCosine, const CutLocusOptions& options) {
+  if (!options.everyAngle && !(smallestCosine <= std::cos(options.angleThreshold) + 1e-9))
+    return std::numeric_limits<double>::quiet_NaN();
+  return std::acos(std::max(-1.0, smallestCosine));
+}
+
 std::vector<char> passingVertices(const std::vector<double>& angleDeviation, const std::vector<double>& laplacian,
                                   const std::vector<char>& excluded, const CutLocusOptions& options) {
   std::vector<char> passing(laplacian.size(), 0);

@@ -81,6 +81,10 @@ size_t treeParent(const NeighbourGraph& graph, const std::vector<size_t>& parent
 // its cosine: across a ridge the gradients of the two sides point against each other.
 double smallestCosine(const std::vector<std::array<double, 2>>& directions);
 
+// A ring's angle deviation from its smallest cosine; NaN without options.everyAngle where the angle is
+// below the threshold by far more than rounding (no arc cosine needed: the threshold is all that looks).
+double ringAngle(double smallestCosine, const CutLocusOptions& options);
+
 // Whether each vertex passes both tests, h * Laplacian <= -lambda and angle >= theta (never an `excluded` one).
 std::vector<char> passingVertices(const std::vector<double>& angleDeviation, const std::vector<double>& laplacian,
                                   const std::vector<char>& excluded, const CutLocusOptions& options);

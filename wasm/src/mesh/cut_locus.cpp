@@ -172,8 +172,6 @@ Vec2 CutLocusSolver::vertexGradient(size_t v, const std::vector<double>& distanc
 // its neighbours on the two sides point against each other.
 std::vector<double> CutLocusSolver::angleDeviations(const std::vector<double>& distance, const std::vector<double>& laplacian,
                                                     const CutLocusOptions& options) const {
-  // Above this cosine the angle is below the threshold by far more than rounding: acos is not needed.
-  const double clearlyBelow = std::cos(options.angleThreshold) + 1e-9;
   // Directions only, each gradient normalised once (transport is a rotation), and only where asked:
   // for a skeleton, at the vertices the Laplacian test lets pass and their rings (a few percent of the
   // mesh; the gradients of every vertex were a quarter of the cut locus's time on the horse).
@@ -198,8 +196,7 @@ std::vector<double> CutLocusSolver::angleDeviations(const std::vector<double>& d
     if (const Vec2* d = directionOf(v)) ring.push_back(*d);
     for (size_t n = graph.rowStart[v]; n < graph.rowStart[v + 1]; n++)
       if (const Vec2* d = directionOf(graph.neighbour[n])) ring.push_back(rotate(*d, transportToCenter[n]));
-    const double cosine = smallestCosine(ring);
-    if (options.everyAngle || cosine <= clearlyBelow) deviation[v] = std::acos(std::max(-1.0, cosine));
+    deviation[v] = ringAngle(smallestCosine(ring), options);
   }
   return deviation;
 }

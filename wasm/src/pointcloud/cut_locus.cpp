@@ -122,8 +122,6 @@ CloudCutLocus CloudCutLocusSolver::compute(const std::vector<double>& distance, 
   cutLocus.laplacian = distanceLaplacian(distance);
   result.gradient = gradients(dist);
   cutLocus.angleDeviation.assign(n, kNaN);
-  // Above this cosine the angle is below the threshold by far more than rounding: acos is not needed.
-  const double clearlyBelow = std::cos(options.angleThreshold) + 1e-9;
   std::vector<std::array<double, 2>> ring;
   for (size_t p = 0; p < n; p++) {
     if (!std::isfinite(dist[p])) {
@@ -137,8 +135,7 @@ CloudCutLocus CloudCutLocusSolver::compute(const std::vector<double>& distance, 
     if (unitDirection(neighbourhood.inTangentPlane(p, result.gradient[p]), direction)) ring.push_back(direction);
     for (size_t k = graph.rowStart[p]; k < graph.rowStart[p + 1]; k++)
       if (unitDirection(neighbourhood.inTangentPlane(p, result.gradient[graph.neighbour[k]]), direction)) ring.push_back(direction);
-    const double cosine = smallestCosine(ring);
-    if (options.everyAngle || cosine <= clearlyBelow) cutLocus.angleDeviation[p] = std::acos(std::max(-1.0, cosine));
+    cutLocus.angleDeviation[p] = ringAngle(smallestCosine(ring), options);
   }
 
   cutLocus.root = source;

@@ -54,28 +54,31 @@ void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::v
     near = finder->kNearest(at, k);
     return;
   }
+  // The candidates sorted by their distances from `at`, from the order of the last query's: nearby queries
+  // order them nearly alike, so an insertion sort moves few (a selection and a sort of the k were over a
+  // tenth of a noisy cloud's run). The order of (distance, index) pairs is total: the k first are those a
+  // sort gives.
   std::vector<std::pair<double, size_t>>& byDistance = cache->byDistance;
-  if (cache->reach >= 0) {
-    // The candidates in the order of the last query's distances, sorted again: nearby queries order them
-    // nearly alike, so an insertion sort moves few (a selection and a sort of the k were over a tenth of a
-    // noisy cloud's run). The order of (distance, index) pairs is total: the k first are those a sort gives.
+  auto sortByDistance = [&]() {
     for (auto& [distance2, i] : byDistance) distance2 = norm2(points[i] - at);
     for (size_t j = 1; j < byDistance.size(); j++)
       for (size_t m = j; m > 0 && byDistance[m] < byDistance[m - 1]; m--) std::swap(byDistance[m], byDistance[m - 1]);
-    if (std::sqrt(byDistance[k - 1].first) + norm(at - cache->centre) < cache->reach) {
-      near.resize(k);
-      for (size_t j = 0; j < k; j++) near[j] = byDistance[j].second;
-      return;
-    }
+  };
+  bool held = false;
+  if (cache->reach >= 0) {
+    sortByDistance();
+    held = std::sqrt(byDistance[k - 1].first) + norm(at - cache->centre) < cache->reach;
   }
-  const size_t count = std::min(kCandidateFactor * k, points.size());
-  cache->centre = at;
-  const std::vector<size_t> candidates = finder->kNearest(at, count);
-  // Every point left out is at least as far as the farthest candidate; all of them are in when count is every point.
-  cache->reach = count == points.size() ? INFINITY : norm(points[candidates.back()] - at);
-  byDistance.clear();
-  for (size_t i : candidates) byDistance.push_back({norm2(points[i] - at), i});
-  std::sort(byDistance.begin(), byDistance.end());
+  if (!held) {
+    const size_t count = std::min(kCandidateFactor * k, points.size());
+    const std::vector<size_t> candidates = finder->kNearest(at, count); // nearest first
+    cache->centre = at;
+    // Every point left out is at least as far as the farthest candidate; all of them are in when count is every point.
+    cache->reach = count == points.size() ? INFINITY : norm(points[candidates.back()] - at);
+    byDistance.clear();
+    for (size_t i : candidates) byDistance.push_back({0, i});
+    sortByDistance();
+  }
   near.resize(k);
   for (size_t j = 0; j < k; j++) near[j] = byDistance[j].second;
 }

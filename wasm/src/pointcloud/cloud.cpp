@@ -5,12 +5,19 @@
 #include "pointcloud/exterior.h"
 #include "pointcloud/winding.h"
 
+#include "geometrycentral/pointcloud/local_triangulation.h"
 #include "geometrycentral/pointcloud/point_position_normal_geometry.h"
+#include "geometrycentral/surface/intrinsic_mollification.h"
+#include "geometrycentral/surface/simple_idt.h"
+#include "geometrycentral/surface/surface_mesh_factories.h"
+#include "geometrycentral/surface/tufted_laplacian.h"
+#include "geometrycentral/surface/vertex_position_geometry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 using namespace geometrycentral;
 using namespace geometrycentral::pointcloud;
@@ -41,6 +48,30 @@ void validateArrays(const CloudArrays& arrays, int neighbours) {
   }
 }
 
+// The tufted intrinsic triangulation of the local triangulations (Sharp & Crane 2020), made as
+// geometry-central's PointPositionGeometry::computeTuftedTriangulation makes it: one mesh of every local
+// triangle, its edge lengths mollified, the tufted cover, intrinsic Delaunay flips.
+std::tuple<std::unique_ptr<surface::SurfaceMesh>, std::unique_ptr<surface::EdgeLengthGeometry>>
+tuftedCover(const LocalTriangulations& local, const PointData<Vector3>& positions) {
+  const size_t n = positions.size();
+  std::vector<std::vector<size_t>> triangles;
+  std::vector<Vector3> points(n);
+  for (size_t p = 0; p < n; p++) {
+    points[p] = positions[p];
+    for (const std::array<size_t, 3>& t : local[p]) triangles.push_back({t[0], t[1], t[2]});
+  }
+  std::unique_ptr<surface::SurfaceMesh> mesh;
+  std::unique_ptr<surface::VertexPositionGeometry> embedded;
+  std::tie(mesh, embedded) = surface::makeSurfaceMeshAndGeometry(triangles, points);
+  embedded->requireEdgeLengths();
+  surface::EdgeData<double> lengths = embedded->edgeLengths;
+  surface::mollifyIntrinsic(*mesh, lengths, 1e-5);
+  surface::buildIntrinsicTuftedCover(*mesh, lengths);
+  surface::flipToDelaunay(*mesh, lengths);
+  auto geometry = std::make_unique<surface::EdgeLengthGeometry>(*mesh, lengths);
+  return {std::move(mesh), std::move(geometry)};
+}
+
 } // namespace
 
 Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
@@ -62,14 +93,14 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
     cloudGeometry = std::make_unique<PointPositionNormalGeometry>(*pointCloud, positions, normals);
   }
   cloudGeometry->kNeighborSize = unsigned(neighbours);
-  cloudGeometry->requireTuftedTriangulation();
-  surface::SurfaceMesh& tuftedMesh = *cloudGeometry->tuftedMesh;
-  surface::EdgeLengthGeometry& tufted = *cloudGeometry->tuftedGeom;
+  localTriangulations = handleToInds(*pointCloud, buildLocalTriangulations(*pointCloud, *cloudGeometry, true));
+  std::tie(tuftedMesh, tuftedGeometry) = tuftedCover(localTriangulations, positions);
+  surface::EdgeLengthGeometry& tufted = *tuftedGeometry;
   tufted.requireEdgeLengths();
 
   UnionFind joined(n);
   double spacing = 0;
-  for (surface::Edge e : tuftedMesh.edges()) {
+  for (surface::Edge e : tuftedMesh->edges()) {
     joined.unite(uint32_t(e.firstVertex().getIndex()), uint32_t(e.secondVertex().getIndex()));
     spacing += tufted.edgeLengths[e];
   }
@@ -92,7 +123,7 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   facts.bboxMin = {low.x, low.y, low.z};
   facts.bboxMax = {high.x, high.y, high.z};
   facts.bboxDiagonal = norm(high - low);
-  facts.meanSpacing = spacing / tuftedMesh.nEdges();
+  facts.meanSpacing = spacing / tuftedMesh->nEdges();
   facts.normalsFromFile = !arrays.normals.empty();
 
   geodesicSolver = std::make_unique<CloudGeodesics>(tufted, component);
@@ -114,12 +145,15 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
 }
 
 const CloudNeighbourhood& Cloud::neighbourhood() {
-  if (!neighbourGraph) neighbourGraph = std::make_unique<CloudNeighbourhood>(*cloudGeometry, *mlsSurface);
+  if (!neighbourGraph) {
+    neighbourGraph = std::make_unique<CloudNeighbourhood>(*cloudGeometry, *mlsSurface, localTriangulations);
+    localTriangulations = LocalTriangulations();
+  }
   return *neighbourGraph;
 }
 
 const CloudCutLocusSolver& Cloud::cutLocusSolver() {
-  if (!cutLocus) cutLocus = std::make_unique<CloudCutLocusSolver>(neighbourhood(), *cloudGeometry->tuftedGeom, cloudFacts.meanSpacing);
+  if (!cutLocus) cutLocus = std::make_unique<CloudCutLocusSolver>(neighbourhood(), *tuftedGeometry, cloudFacts.meanSpacing);
   return *cutLocus;
 }
 
@@ -137,7 +171,7 @@ bool Cloud::inside(const geometrycentral::Vector3& p) {
 const std::vector<std::vector<uint32_t>>& Cloud::tuftedNeighbours() {
   if (!tuftedAdjacency.empty()) return tuftedAdjacency;
   tuftedAdjacency.resize(pointCount());
-  for (geometrycentral::surface::Edge e : cloudGeometry->tuftedMesh->edges()) {
+  for (geometrycentral::surface::Edge e : tuftedMesh->edges()) {
     const uint32_t a = uint32_t(e.firstVertex().getIndex()), b = uint32_t(e.secondVertex().getIndex());
     if (a == b) continue;
     tuftedAdjacency[a].push_back(b);

@@ -7,6 +7,8 @@
 
 #include "geometrycentral/pointcloud/point_cloud.h"
 #include "geometrycentral/pointcloud/point_position_geometry.h"
+#include "geometrycentral/surface/edge_length_geometry.h"
+#include "geometrycentral/surface/surface_mesh.h"
 
 #include <array>
 #include <cstdint>
@@ -55,6 +57,9 @@ public:
 
   geometrycentral::pointcloud::PointCloud& cloud() { return *pointCloud; }
   geometrycentral::pointcloud::PointPositionGeometry& geometry() { return *cloudGeometry; }
+  // The tufted intrinsic triangulation (vertex i is point i), Delaunay, built once from the points'
+  // local triangulations.
+  geometrycentral::surface::EdgeLengthGeometry& tufted() { return *tuftedGeometry; }
   CloudGeodesics& geodesics() { return *geodesicSolver; }
   const MlsSurface& mls() const { return *mlsSurface; }
   // The surface area each point stands for, pi R^2 / k with R the distance to its k-th neighbour: the
@@ -82,6 +87,11 @@ private:
   std::vector<double> areas;
   std::unique_ptr<geometrycentral::pointcloud::PointCloud> pointCloud;
   std::unique_ptr<geometrycentral::pointcloud::PointPositionGeometry> cloudGeometry;
+  // Every point's local triangulation, made once for the tufted cover and kept until the neighbourhood
+  // graph is built from it too (geometry-central's tufted triangulation would make its own).
+  LocalTriangulations localTriangulations;
+  std::unique_ptr<geometrycentral::surface::SurfaceMesh> tuftedMesh;
+  std::unique_ptr<geometrycentral::surface::EdgeLengthGeometry> tuftedGeometry;
   std::unique_ptr<CloudGeodesics> geodesicSolver;
   std::unique_ptr<MlsSurface> mlsSurface;
   std::unique_ptr<CloudNeighbourhood> neighbourGraph;

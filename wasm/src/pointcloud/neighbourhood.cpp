@@ -2,8 +2,6 @@
 
 #include "cscd/union_find.h"
 
-#include "geometrycentral/pointcloud/local_triangulation.h"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -31,7 +29,7 @@ constexpr double kMaxNoisyElevation = 70 * M_PI / 180;
 
 } // namespace
 
-CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const MlsSurface& mls) {
+CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const MlsSurface& mls, const LocalTriangulations& triangles) {
   PointCloud& cloud = geometry.cloud;
   const size_t n = cloud.nPoints();
   geometry.requireNormals();
@@ -73,7 +71,6 @@ CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const Ml
     alongMls++;
     return false;
   };
-  PointData<std::vector<std::array<size_t, 3>>> triangles = handleToInds(cloud, buildLocalTriangulations(cloud, geometry));
   for (size_t p = 0; p < n; p++)
     for (const auto& triangle : triangles[p])
       for (size_t q : {triangle[1], triangle[2]}) {

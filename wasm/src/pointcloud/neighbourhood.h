@@ -13,6 +13,9 @@
 
 namespace cscd {
 
+// Each point's local triangulation (geometry-central's buildLocalTriangulations): triangles (point, a, b).
+using LocalTriangulations = geometrycentral::pointcloud::PointData<std::vector<std::array<size_t, 3>>>;
+
 // The graph CSCD-PC's cut locus and loops run on (paper App. "Our adaptation on point clouds": a
 // neighbourhood pruned of the edges that join separate parts of the shape). Its edges are those of the
 // points' local triangulations (each point's k nearest neighbours projected to its tangent plane and
@@ -25,7 +28,8 @@ namespace cscd {
 // normals, where the noise is averaged out, and kept if it runs along the surface there. A clean cloud's graph is the test alone.
 class CloudNeighbourhood {
 public:
-  CloudNeighbourhood(geometrycentral::pointcloud::PointPositionGeometry& geometry, const MlsSurface& mls);
+  // local: the points' local triangulations, those the tufted triangulation was built from.
+  CloudNeighbourhood(geometrycentral::pointcloud::PointPositionGeometry& geometry, const MlsSurface& mls, const LocalTriangulations& local);
 
   // Each point's neighbours in their order around it in its tangent plane (so a ring, as on a mesh).
   const NeighbourGraph& graph() const { return neighbourGraph; }

@@ -105,7 +105,7 @@ Regions PointCloudRealization::regions(const Selection<Candidate>& packed) {
   // edges: the graph leaves holes at creases and in noise, where three regions met unseen and their
   // triangle stayed a cycle of the skeleton (horse_clean).
   std::vector<std::array<uint32_t, 3>> triangles, tufted;
-  for (surface::Face f : cloud.geometry().tuftedMesh->faces()) {
+  for (surface::Face f : cloud.tufted().mesh.faces()) {
     std::array<uint32_t, 3> t;
     size_t k = 0;
     for (surface::Vertex v : f.adjacentVertices()) t[k++] = uint32_t(v.getIndex());

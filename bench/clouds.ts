@@ -23,6 +23,7 @@ import { checkCloud } from '../lib/io/cloud-check.ts';
 import { parseMesh, parseShape } from '../lib/io/index.ts';
 import { boundingBoxDiagonal } from '../lib/io/repair.ts';
 import { parseSkeleton } from '../lib/io/skeleton.ts';
+import { refine } from '../lib/mesh/refine.ts';
 import { geometricMean, leafIndices, meanDistanceToSkeleton, median } from './metrics.ts';
 import { COMPILED_CORE, repoRoot, runPinned, shell, skeletorPython, venvPython, type Run } from './process.ts';
 import { claimResultName } from './result-name.ts';
@@ -30,13 +31,26 @@ import { claimResultName } from './result-name.ts';
 const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
 const cloudFolder = path.join(sharedData, 'pointclouds');
 const resultsDir = path.join(repoRoot, 'bench', 'results');
-const METHODS = ['cscd-pc', 'msls-graph', 'skeletor', 'cscd-m'] as const;
+const METHODS = ['cscd-pc', 'msls-graph', 'skeletor', 'cscd-m', 'cscd-m-dense'] as const;
 type Method = (typeof METHODS)[number];
 
 /** The reference skeleton points shipped beside a cloud (WoodSKE's trees), or null. */
 function referencePoints(cloudFile: string): string | null {
   const file = path.join(sharedData, 'reference_skeletons', `${path.basename(cloudFile, '.ply')}_skeleton_points.ply`);
   return existsSync(file) ? file : null;
+}
+
+/**
+ * Levels of midpoint subdivision (four times the faces, about four times the vertices, a level) that bring
+ * a mesh of `vertices` vertices nearest a cloud of `points` points, on a log scale: CSCD-M at the cloud's
+ * resolution, the same surface sampled as densely (0: the mesh as given is nearest).
+ */
+function levelsNear(vertices: number, points: number): number {
+  let best = 0;
+  for (let levels = 1; levels <= 3; levels++) {
+    if (Math.abs(Math.log((vertices * 4 ** levels) / points)) < Math.abs(Math.log((vertices * 4 ** best) / points))) best = levels;
+  }
+  return best;
 }
 
 /** The shared mesh a cloud was sampled from (../shared/data/pointclouds/MANIFEST.md), or null (trees, external clouds). */
@@ -84,14 +98,16 @@ function score(core: Core, row: Row, mesh: MeshArrays | null, cloud: CloudArrays
 
 function markdown(rows: Row[], machine: string, argv: string[]): string {
   const lines = [
-    '# Point-cloud bench: CSCD-PC, MSLS on the neighbourhood graph, pc-skeletor, CSCD-M on the source mesh',
+    '# Point-cloud bench: CSCD-PC, MSLS on the neighbourhood graph, pc-skeletor, CSCD-M on the source mesh (as given and at the cloud\'s resolution)',
     '',
     machine,
     '',
     `Options: \`npm run bench:clouds -- ${argv.join(' ')}\`. Every method in its own process pinned to one core, default options `
       + '(CSCD-PC and CSCD-M: `n = auto`; MSLS: pygel3d\'s `MSLS_skeleton_and_map` on the edges of the cloud\'s neighbourhood graph, '
       + 'the local-triangulation edges CSCD-PC runs on; skeletor: pc-skeletor 1.0.0\'s LBC, Laplacian-based contraction of the cloud, its '
-      + '`skeleton_graph`, a minimum spanning tree over points sampled from the contracted cloud; the cloud scaled to a unit diagonal for it, the skeleton scaled back). Seconds: each runner\'s own wall time of the skeletonisation (reading, checking and '
+      + '`skeleton_graph`, a minimum spanning tree over points sampled from the contracted cloud; the cloud scaled to a unit diagonal for it, the skeleton scaled back; '
+      + 'cscd-m-dense: CSCD-M on the source mesh after the levels of midpoint subdivision that bring its vertex count nearest the cloud\'s point count, '
+      + 'the same surface at the cloud\'s resolution, where at least one level does; scored against the source mesh as given). Seconds: each runner\'s own wall time of the skeletonisation (reading, checking and '
       + `writing excluded; MSLS: building its graph excluded; CSCD's WebAssembly compiled whole before the clock starts, \`${COMPILED_CORE.join(' ')}\`). Error ×1e3, `
       + 'the paper\'s reconstruction error with radii derived by one rule '
       + 'for every method: against the source mesh (its vertices) and against the cloud (its points). Reference: for the trees, the mean '
@@ -113,6 +129,11 @@ function markdown(rows: Row[], machine: string, argv: string[]): string {
     const x = key === 'seconds' ? r.run.seconds : r.againstMesh, y = key === 'seconds' ? other?.run.seconds : other?.againstMesh;
     return x !== null && x !== undefined && y !== null && y !== undefined && y > 0 ? [x / y] : [];
   });
+  // CSCD-M on the mesh nearest the cloud's point count: subdivided (cscd-m-dense) or as given.
+  const atResolution = of('cscd-pc').flatMap((r) => {
+    const other = of('cscd-m-dense').find((o) => o.cloud === r.cloud) ?? of('cscd-m').find((o) => o.cloud === r.cloud);
+    return r.run.seconds && other?.run.seconds ? [r.run.seconds / other.run.seconds] : [];
+  });
   const topology = of('cscd-pc').filter((r) => r.genus !== null && r.cycles !== null);
   lines.push('', '| summary | value |', '| --- | --- |',
     `| CSCD-PC clouds with cycles = genus of the source | ${topology.filter((r) => r.cycles === r.genus).length} of ${topology.length} |`,
@@ -120,6 +141,7 @@ function markdown(rows: Row[], machine: string, argv: string[]): string {
     `| error vs mesh, CSCD-PC / CSCD-M: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'cscd-m', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'cscd-m', 'againstMesh')))}) |`,
     `| error vs mesh, CSCD-PC / MSLS on the graph: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'msls-graph', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'msls-graph', 'againstMesh')))}) |`,
     `| seconds, CSCD-PC / CSCD-M: median | ${num(median(ratios('cscd-pc', 'cscd-m', 'seconds')))} |`,
+    `| seconds, CSCD-PC / CSCD-M at the cloud's resolution (cscd-m-dense where there is one, else cscd-m): median | ${num(median(atResolution))} |`,
     `| error vs mesh, CSCD-PC / pc-skeletor: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'skeletor', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'skeletor', 'againstMesh')))}) |`,
     `| seconds, CSCD-PC / MSLS on the graph: median | ${num(median(ratios('cscd-pc', 'msls-graph', 'seconds')))} |`,
     `| seconds, CSCD-PC / pc-skeletor: median | ${num(median(ratios('cscd-pc', 'skeletor', 'seconds')))} |`);
@@ -190,9 +212,18 @@ async function main(): Promise<void> {
         meshRuns.set(meshPath, runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, meshFile], meshFile, path.join(runDir, `${meshLabel}.cscd-m.log`), timeout, cpu));
       }
       runs.push(['cscd-m', meshRuns.get(meshPath)!]);
+      const levels = levelsNear(mesh!.positions.length / 3, cloud.positions.length / 3);
+      const denseKey = `${meshPath}@${levels}`;
+      if (levels > 0 && !meshRuns.has(denseKey)) {
+        const denseFile = path.join(runDir, `${meshLabel}.cscd-m-dense${levels}.json`);
+        meshRuns.set(denseKey, runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, denseFile, '--subdivide', String(levels)],
+          denseFile, path.join(runDir, `${meshLabel}.cscd-m-dense${levels}.log`), timeout, cpu));
+      }
+      if (levels > 0) runs.push(['cscd-m-dense', meshRuns.get(denseKey)!]);
     }
     for (const [method, run] of runs) {
-      const row: Row = { cloud: label, points: cloud.positions.length / 3, mesh: meshPath, genus, method, run, nodes: null, cycles: null, leaves: null, againstMesh: null, againstCloud: null, toReference: null, note: '' };
+      const note = method === 'cscd-m-dense' ? `the mesh subdivided to ${refine(mesh!, levelsNear(mesh!.positions.length / 3, cloud.positions.length / 3)).positions.length / 3} vertices` : '';
+      const row: Row = { cloud: label, points: cloud.positions.length / 3, mesh: meshPath, genus, method, run, nodes: null, cycles: null, leaves: null, againstMesh: null, againstCloud: null, toReference: null, note };
       score(core, row, mesh, cloud, reference);
       rows.push(row);
       process.stdout.write(`  ${method.padEnd(10)} ${run.status === 'ok' ? `${run.seconds!.toFixed(1)} s, ${row.cycles} cycles, error vs mesh ${num(row.againstMesh)}, vs cloud ${num(row.againstCloud)}${reference ? `, reference ${num(row.toReference)}% of the diagonal` : ''}` : `${run.status} ${run.reason}`}\n`);

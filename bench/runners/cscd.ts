@@ -2,7 +2,11 @@
 // calls as `cscd skeleton` (cli/commands/skeleton.ts), in a process of its own so that it is timed and
 // pinned like the baselines.
 //
-//   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R]
+//   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R] [--subdivide L]
+//
+// --subdivide L runs on the mesh after L levels of midpoint subdivision (lib/mesh/refine.ts: the same
+// surface, four times the faces a level), made before the clock starts: the point-cloud bench's CSCD-M at
+// about a cloud's resolution.
 //
 // Writes the skeleton as our JSON and prints, as the last line of stdout, {"seconds": S, "stage1Seconds": T,
 // "serialSeconds": D, "memoryMB": M} (D: on a pool, this thread's drawing and accepting; M: this
@@ -19,21 +23,26 @@ import { openNodePool } from '../../lib/core/node-pool.ts';
 import { defaultOptions } from '../../lib/core/options.ts';
 import { runStage1 } from '../../lib/core/pool.ts';
 import { parseMesh } from '../../lib/io/index.ts';
+import { refine } from '../../lib/mesh/refine.ts';
 import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
 
 const { positionals, values } = parseArgs({
   allowPositionals: true,
-  options: { workers: { type: 'string', default: '1' }, 'draw-ahead': { type: 'string', default: String(defaultOptions.drawAhead) } },
+  options: {
+    workers: { type: 'string', default: '1' },
+    'draw-ahead': { type: 'string', default: String(defaultOptions.drawAhead) },
+    subdivide: { type: 'string', default: '0' },
+  },
 });
 const [meshPath, outPath] = positionals;
-const workers = Number(values.workers);
+const workers = Number(values.workers), levels = Number(values.subdivide);
 const options = { ...defaultOptions, drawAhead: Number(values['draw-ahead']) };
-if (!meshPath || !outPath || !(workers >= 1) || !(options.drawAhead >= 1)) {
-  process.stderr.write('usage: node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R]\n');
+if (!meshPath || !outPath || !(workers >= 1) || !(options.drawAhead >= 1) || !Number.isInteger(levels) || levels < 0) {
+  process.stderr.write('usage: node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R] [--subdivide L]\n');
   process.exit(2);
 }
 
-const mesh = parseMesh(await readFile(meshPath), meshPath);
+const mesh = refine(parseMesh(await readFile(meshPath), meshPath), levels);
 const core = await loadCoreNode();
 
 const started = performance.now();

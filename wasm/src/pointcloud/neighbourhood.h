@@ -28,8 +28,8 @@ using LocalTriangulations = geometrycentral::pointcloud::PointData<std::vector<s
 // normals, where the noise is averaged out, and kept if it runs along the surface there. A clean cloud's graph is the test alone.
 class CloudNeighbourhood {
 public:
-  // local: the points' local triangulations, those the tufted triangulation was built from.
-  CloudNeighbourhood(geometrycentral::pointcloud::PointPositionGeometry& geometry, const MlsSurface& mls, const LocalTriangulations& local);
+  // triangles: the points' local triangulations, those the tufted triangulation was built from.
+  CloudNeighbourhood(geometrycentral::pointcloud::PointPositionGeometry& geometry, const MlsSurface& mls, const LocalTriangulations& triangles);
 
   // Each point's neighbours in their order around it in its tangent plane (so a ring, as on a mesh).
   const NeighbourGraph& graph() const { return neighbourGraph; }

@@ -205,6 +205,9 @@ async function main(): Promise<void> {
       : { status: 'failed', seconds: null, reason: 'no neighbourhood graph (CSCD-PC failed)', file: mslsFile }]);
     const skeletorFile = path.join(runDir, `${label}.skeletor.obj`);
     runs.push(['skeletor', runPinned([skeletorPython, 'bench/runners/skeletor.py', cloudPath, skeletorFile], skeletorFile, path.join(runDir, `${label}.skeletor.log`), timeout, cpu)]);
+    // CSCD-M at the cloud's resolution: the source mesh subdivided `levels` times (none: the mesh as given is nearest).
+    const levels = mesh ? levelsNear(mesh.positions.length / 3, cloud.positions.length / 3) : 0;
+    const denseVertices = levels > 0 ? refine(mesh!, levels).positions.length / 3 : 0;
     if (meshPath) {
       const meshLabel = path.basename(meshPath, '.ply');
       const meshFile = path.join(runDir, `${meshLabel}.cscd-m.json`);
@@ -212,7 +215,6 @@ async function main(): Promise<void> {
         meshRuns.set(meshPath, runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, meshFile], meshFile, path.join(runDir, `${meshLabel}.cscd-m.log`), timeout, cpu));
       }
       runs.push(['cscd-m', meshRuns.get(meshPath)!]);
-      const levels = levelsNear(mesh!.positions.length / 3, cloud.positions.length / 3);
       const denseKey = `${meshPath}@${levels}`;
       if (levels > 0 && !meshRuns.has(denseKey)) {
         const denseFile = path.join(runDir, `${meshLabel}.cscd-m-dense${levels}.json`);
@@ -222,7 +224,7 @@ async function main(): Promise<void> {
       if (levels > 0) runs.push(['cscd-m-dense', meshRuns.get(denseKey)!]);
     }
     for (const [method, run] of runs) {
-      const note = method === 'cscd-m-dense' ? `the mesh subdivided to ${refine(mesh!, levelsNear(mesh!.positions.length / 3, cloud.positions.length / 3)).positions.length / 3} vertices` : '';
+      const note = method === 'cscd-m-dense' ? `the mesh subdivided to ${denseVertices} vertices` : '';
       const row: Row = { cloud: label, points: cloud.positions.length / 3, mesh: meshPath, genus, method, run, nodes: null, cycles: null, leaves: null, againstMesh: null, againstCloud: null, toReference: null, note };
       score(core, row, mesh, cloud, reference);
       rows.push(row);

@@ -482,8 +482,9 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
     }
     result.iterations++;
     recorder.record(result.iterations, x);
-    shortest = std::min(shortest, loopLength(x));
-    windowLongest = std::max(windowLongest, loopLength(x));
+    const double length = loopLength(x);
+    shortest = std::min(shortest, length);
+    windowLongest = std::max(windowLongest, length);
     if (result.iterations % kStallWindow == 0 && !settled) {
       if (shortest > (1 - kStalledShare) * shortestBefore && windowLongest > (1 + kStalledShare) * shortest) {
         char share[16];
@@ -495,7 +496,7 @@ ShortenedCloudLoop shortenLoop(Cloud& cloud, const Polyline& polyline, const std
       shortestBefore = shortest;
       windowLongest = 0;
     }
-    if (loopLength(x) > longestLoop) {
+    if (length > longestLoop) {
       givenUp = "the loop grew instead of shortening (the cloud's surface is too rough or sparse here)";
       break;
     }

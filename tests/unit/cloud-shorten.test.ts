@@ -382,7 +382,7 @@ describe('a loop on a rough, sparse cloud', () => {
 
 describe('a loop that jitters at its shortest', () => {
   // armadillo_noise1.0, source 1750: the loop through its sixth target (the one the separator keeps) gets
-  // to about 14.9 within 100 steps and then jitters by under 1% of its length, each step lowering the
+  // to about 14.9 within 100 steps and then jitters by about 1% of its length, each step lowering the
   // energy and a resampling or a restart of the pre-images raising it again; it ran all 5000 steps before
   // it was given up (fixture's provenance). A loop that creeps at a nearly constant length (bob's) goes on.
   const jittering = loopFixture('armadillo_noise_stall_loop.json');

@@ -35,10 +35,9 @@ constexpr double kSettledMove = 1e-3;
 constexpr double kSettledDecrease = 1e-4;
 constexpr int kMaxIterations = 5000;
 // A loop that jitters is given up as not converging, as kMaxIterations would give it up: over kStallWindow
-// steps it got shorter by less than kStalledShare of its length while its length varied by more. Where the
-// MLS surface is rough at the loop's scale (a noisy cloud; the two sides of a part thinner than the
-// neighbourhood, as on a cloud sampled from elk.ply, where 18 of 80 sources' loops ran all 5000 steps) a
-// loop at its shortest can jitter by about 1% of its length for good, each step lowering the energy and a
+// steps it got shorter by less than kStalledShare of its length while its length varied by more. On some
+// clouds (armadillo_noise1.0; one sampled from elk.ply, where 18 of 80 sources' loops ran all 5000 steps)
+// a loop at its shortest jitters by about 1% of its length for good, each step lowering the energy and a
 // resampling or a restart of the pre-images raising it again. A loop that creeps (along bob's tube) varies
 // by less and goes on; a window of 200 steps also gave up a loop of horse_nonuniform that settled after
 // 1252, and accepting jittering loops as converged changed skeletons both ways, up to 3.8 times the error

@@ -15,14 +15,15 @@ import { subsampleCloud } from '../lib/cloud/subsample.ts';
 import { random } from '../lib/core/random.ts';
 import { parseShape } from '../lib/io/index.ts';
 import { boundingBoxDiagonal } from '../lib/io/repair.ts';
+import { cloudPly } from '../tests/unit/support/clouds.ts';
 
 const { values, positionals } = parseArgs({
   allowPositionals: true,
   options: { points: { type: 'string', default: '20000' }, noise: { type: 'string', default: '0' }, seed: { type: 'string', default: '1' } },
 });
 const [meshFile, outFile] = positionals;
-const points = Number(values.points), noisePercent = Number(values.noise), seed = Number(values.seed);
-if (!meshFile || !outFile || !(points > 0) || !(noisePercent >= 0) || !Number.isInteger(seed)) {
+const pointCount = Number(values.points), noisePercent = Number(values.noise), seed = Number(values.seed);
+if (!meshFile || !outFile || !(pointCount > 0) || !(noisePercent >= 0) || !Number.isInteger(seed)) {
   console.error('usage: sample-cloud.ts MESH OUT.ply [--points N] [--noise PERCENT] [--seed S]');
   process.exit(2);
 }
@@ -45,7 +46,7 @@ for (let f = 0; f < faces; f++) {
 }
 
 const next = random(seed);
-const drawn = 3 * points;
+const drawn = 3 * pointCount;
 const positions = new Float64Array(3 * drawn), normals = new Float32Array(3 * drawn);
 for (let i = 0; i < drawn; i++) {
   const at = next() * area;
@@ -63,18 +64,14 @@ for (let i = 0; i < drawn; i++) {
     normals[3 * i + k] = normal[3 * lo + k];
   }
 }
-const cloud = subsampleCloud({ positions, normals }, points, seed);
+const cloud = subsampleCloud({ positions, normals }, pointCount, seed);
 
 const count = cloud.positions.length / 3, withNormals = noisePercent === 0;
 const sigma = (noisePercent / 100) * boundingBoxDiagonal(cloud.positions);
 const gaussian = () => Math.sqrt(-2 * Math.log(1 - next())) * Math.cos(2 * Math.PI * next());
-const stride = withNormals ? 6 : 3;
-const body = new Float32Array(count * stride);
-for (let i = 0; i < count; i++) {
-  for (let k = 0; k < 3; k++) body[i * stride + k] = cloud.positions[3 * i + k] + (withNormals ? 0 : sigma * gaussian());
-  if (withNormals) for (let k = 0; k < 3; k++) body[i * stride + 3 + k] = cloud.normals![3 * i + k];
-}
-const properties = ['x', 'y', 'z', ...(withNormals ? ['nx', 'ny', 'nz'] : [])].map((name) => `property float ${name}\n`).join('');
-const header = `ply\nformat binary_little_endian 1.0\ncomment sampled from ${path.basename(meshFile)} by scripts/sample-cloud.ts, seed ${seed}, noise ${noisePercent}%\nelement vertex ${count}\n${properties}end_header\n`;
-writeFileSync(outFile, Buffer.concat([Buffer.from(header), Buffer.from(body.buffer)]));
+const triple = (values: ArrayLike<number>, i: number) => [values[3 * i], values[3 * i + 1], values[3 * i + 2]];
+const points = Array.from({ length: count }, (_, i) => triple(cloud.positions, i).map((x) => (withNormals ? x : x + sigma * gaussian())));
+const pointNormals = withNormals ? Array.from({ length: count }, (_, i) => triple(cloud.normals!, i)) : null;
+const comment = `sampled from ${path.basename(meshFile)} by scripts/sample-cloud.ts, seed ${seed}, noise ${noisePercent}%`;
+writeFileSync(outFile, cloudPly(points, pointNormals, 'binary_little_endian', 'float', comment));
 console.log(`${path.basename(outFile)}: ${count} points${withNormals ? ' with normals' : `, noise ${noisePercent}% of the diagonal`}`);

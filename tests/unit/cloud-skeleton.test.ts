@@ -13,6 +13,7 @@ import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
 import { fixture, sharedMesh } from '../paths.ts';
 import { cscd } from './support/cli.ts';
+import { torusPoints } from './support/clouds.ts';
 import { readMesh } from './support/meshes.ts';
 import { leafIndices } from '../../bench/metrics.ts';
 
@@ -99,6 +100,28 @@ describe('CSCD-PC skeletons', () => {
     } finally {
       cloud.dispose();
     }
+  });
+
+  it('makes a torus one cycle, with hardly a spur: slices of its tube that meet are no junction', () => {
+    // Tilted loops around the tube let three consecutive slices' regions meet; the clique-to-star step
+    // made each such triple a star, its middle slice a spur: 2-10 leaves per skeleton, 50 in these nine
+    // before; 4 since (docs/skeleton.md, "Slices of one tube").
+    const leaves: number[] = [];
+    for (const pointSeed of [1, 2, 3]) {
+      const torus = torusPoints(2000, 1, 0.3, pointSeed);
+      for (const seed of [1, 2, 3]) {
+        const cloud = core.openCloud(torus);
+        try {
+          const skeleton = cloud.skeleton({ n: 40, seed });
+          expect(skeleton.stats.cycles, `points ${pointSeed}, seed ${seed}`).toBe(1);
+          leaves.push(leafIndices(skeleton.radii.length, skeleton.edges).length);
+        } finally {
+          cloud.dispose();
+        }
+      }
+    }
+    expect(Math.max(...leaves)).toBeLessThanOrEqual(2);
+    expect(leaves.reduce((sum, l) => sum + l, 0)).toBeLessThanOrEqual(5);
   });
 
   it('gives the same skeleton, byte for byte, on one thread and on 1 or 2 worker threads', async () => {

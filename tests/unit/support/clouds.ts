@@ -47,6 +47,23 @@ export function spherePoints(n: number, seed: number): { positions: Float64Array
   return { positions, normals: Float32Array.from(positions) };
 }
 
+/**
+ * `n` points spread at random (from the seed) over the torus about the z axis with core radius `R` and tube
+ * radius `r` (uniform in area: rejection by the area element), with their outward normals.
+ */
+export function torusPoints(n: number, R: number, r: number, seed: number): { positions: Float64Array; normals: Float32Array } {
+  const next = random(seed);
+  const positions = new Float64Array(3 * n), normals = new Float32Array(3 * n);
+  for (let i = 0; i < n; ) {
+    const around = 2 * Math.PI * next(), across = 2 * Math.PI * next();
+    if (next() * (R + r) > R + r * Math.cos(across)) continue;
+    const normal = [Math.cos(around) * Math.cos(across), Math.sin(around) * Math.cos(across), Math.sin(across)];
+    positions.set([R * Math.cos(around) + r * normal[0], R * Math.sin(around) + r * normal[1], r * normal[2]], 3 * i);
+    normals.set(normal, 3 * i++);
+  }
+  return { positions, normals };
+}
+
 /** Distance from each point to its nearest other point (brute force: small clouds only). */
 export function nearestDistances(positions: Float64Array): number[] {
   const n = positions.length / 3;

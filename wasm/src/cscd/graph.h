@@ -19,11 +19,22 @@ struct SkeletonGraph {
   size_t cycleRank() const { return edges.size() + components() - nodes.size(); }
 };
 
+// A packed separator as the clique-to-star step sees it: its loop's centroid, unit normal and radius;
+// a zero normal where it has none (an open path).
+struct SeparatorFrame {
+  geometrycentral::Vector3 centre{0, 0, 0};
+  geometrycentral::Vector3 normal{0, 0, 0};
+  double radius = 0;
+};
+
 // Clique to star (paper Sec. 4.2.5, after LS): 3-cliques that are junctions are grouped when they share
 // an edge, and each group becomes a star around a new node at the weighted mean of its members. Only
 // triangles listed in `junctions` (sorted node triples) count: three regions that meet at one place
 // of the surface. A ring of three regions that touch pairwise in three different places is a cycle of
-// the shape (e.g. a torus cut by three separators), not a junction, and is kept.
-void cliquesToStars(SkeletonGraph& graph, const std::set<std::array<size_t, 3>>& junctions);
+// the shape (e.g. a torus cut by three separators), not a junction, and is kept. A junction of three
+// consecutive slices of one tube (`separators[i]`: node i's separator, for the first nodes) is no
+// branching: its edge between the outer two is dropped instead.
+void cliquesToStars(SkeletonGraph& graph, const std::set<std::array<size_t, 3>>& junctions,
+                    const std::vector<SeparatorFrame>& separators);
 
 } // namespace cscd

@@ -22,6 +22,7 @@
 
 #include "cscd/bands.h"
 #include "cscd/graph.h"
+#include "cscd/measures.h"
 #include "cscd/options.h"
 #include "cscd/pack.h"
 #include "cscd/regions.h"
@@ -207,7 +208,10 @@ public:
     graph.nodes = regions.centroid;
     graph.weights = regions.area;
     graph.edges.assign(regions.adjacent.begin(), regions.adjacent.end());
-    cliquesToStars(graph, regions.junctions);
+    std::vector<SeparatorFrame> frames;
+    for (const Candidate* c : packed)
+      frames.push_back(c->closed ? SeparatorFrame{loopCentroid(c->loop, true), loopNormal(c->loop), separatorRadius(*c)} : SeparatorFrame{});
+    cliquesToStars(graph, regions.junctions, frames);
     realization.centre(graph, packed);
     clock.lap("graph");
 

@@ -49,16 +49,23 @@ void cliquesToStars(SkeletonGraph& graph, const std::set<std::array<size_t, 3>>&
   for (const auto& t : junctions)
     for (std::array<size_t, 2> e : {std::array<size_t, 2>{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}}) junctionsOfEdge[e].push_back(t);
   auto hasFrame = [&](size_t v) { return v < separators.size() && norm2(separators[v].normal) > 0; };
-  for (const auto& t : junctions) {
-    if (!present(t) || !hasFrame(t[0]) || !hasFrame(t[1]) || !hasFrame(t[2])) continue;
-    for (int k = 0; k < 3; k++) {
-      const size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
-      if (!between(separators[t[k]], separators[a], separators[b])) continue;
-      const std::array<size_t, 2> outer{std::min(a, b), std::max(a, b)};
-      const auto& sharing = junctionsOfEdge[outer];
-      if (std::none_of(sharing.begin(), sharing.end(), [&](const auto& other) { return other != t && present(other); }))
-        edgeSet.erase(outer);
-      break;
+  // Passes until none drops an edge: a triangle that a drop takes away no longer holds back the slices
+  // that share their outer edge with it.
+  for (bool dropped = true; dropped;) {
+    dropped = false;
+    for (const auto& t : junctions) {
+      if (!present(t) || !hasFrame(t[0]) || !hasFrame(t[1]) || !hasFrame(t[2])) continue;
+      for (int k = 0; k < 3; k++) {
+        const size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+        if (!between(separators[t[k]], separators[a], separators[b])) continue;
+        const std::array<size_t, 2> outer{std::min(a, b), std::max(a, b)};
+        const auto& sharing = junctionsOfEdge[outer];
+        if (std::none_of(sharing.begin(), sharing.end(), [&](const auto& other) { return other != t && present(other); })) {
+          edgeSet.erase(outer);
+          dropped = true;
+        }
+        break;
+      }
     }
   }
 

@@ -6,9 +6,8 @@ import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { CoreError, loadCoreNode, type Cloud, type Core, type Polyline, type Sphere } from '../../lib/core/node.ts';
 import { random } from '../../lib/core/random.ts';
-import { parseShape } from '../../lib/io/index.ts';
 import { fixture, sharedData } from '../paths.ts';
-import { revolutionPoints, spherePoints } from './support/clouds.ts';
+import { readCloudFile, revolutionPoints, spherePoints } from './support/clouds.ts';
 
 type Vec = [number, number, number];
 
@@ -24,12 +23,7 @@ const distance = (a: Vec, b: Vec) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] -
 const mean = (values: number[]) => values.reduce((a, b) => a + b, 0) / values.length;
 
 /** A cloud of ../shared/data/pointclouds, parsed. */
-function sharedCloud(name: string) {
-  const file = path.join(sharedData, 'pointclouds', name);
-  const shape = parseShape(new Uint8Array(readFileSync(file)), path.basename(file));
-  if (shape.kind !== 'cloud') throw new Error(`${file} holds a mesh`);
-  return shape;
-}
+const sharedCloud = (name: string) => readCloudFile(path.join(sharedData, 'pointclouds', name));
 
 /** An approximate loop and its sphere, as a fixture holds them. */
 const loopFixture = (name: string) => JSON.parse(readFileSync(fixture('clouds', name), 'utf8')) as { approxLoop: number[]; sphere: Sphere };

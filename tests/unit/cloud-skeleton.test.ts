@@ -10,26 +10,19 @@ import { openNodeCloudPool } from '../../lib/core/node-pool.ts';
 import { defaultCloudOptions } from '../../lib/core/options.ts';
 import { runStage1 } from '../../lib/core/pool.ts';
 import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
-import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
 import { fixture, sharedMesh } from '../paths.ts';
 import { cscd } from './support/cli.ts';
-import { torusPoints } from './support/clouds.ts';
+import { readCloudFile, torusPoints } from './support/clouds.ts';
 import { readMesh } from './support/meshes.ts';
 import { leafIndices } from '../../bench/metrics.ts';
-
-function readCloud(file: string): ParsedCloud {
-  const shape = parseShape(new Uint8Array(readFileSync(file)), path.basename(file));
-  if (shape.kind !== 'cloud') throw new Error(`${file} holds a mesh`);
-  return shape;
-}
 
 let core: Core;
 beforeAll(async () => {
   core = await loadCoreNode();
 });
 
-const bob = readCloud(fixture('clouds', 'bob_subsample.ply'));
-const hand = readCloud(fixture('clouds', 'hand_subsample.ply'));
+const bob = readCloudFile(fixture('clouds', 'bob_subsample.ply'));
+const hand = readCloudFile(fixture('clouds', 'hand_subsample.ply'));
 
 describe('stage 1 from one point, as the page shows it', () => {
   it('records the shortening as it runs, without changing it: the same loop, its steps ending on it', () => {

@@ -186,7 +186,9 @@ public:
     for (size_t s = 0; s < shape.size(); s++) { // a point that sees three regions is where they meet
       std::set<size_t> seen{r.label[s]};
       for (size_t w : shape.neighbours[s]) seen.insert(r.label[w]);
-      if (seen.size() == 3) r.junctions.insert({*seen.begin(), *std::next(seen.begin()), *seen.rbegin()});
+      if (seen.size() == 3)
+        r.junctions.emplace(std::array<size_t, 3>{*seen.begin(), *std::next(seen.begin()), *seen.rbegin()},
+                            shape.samples.positions[s]);
     }
     return r;
   }

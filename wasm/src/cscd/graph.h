@@ -3,6 +3,7 @@
 #include "geometrycentral/utilities/vector3.h"
 
 #include <array>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -29,12 +30,15 @@ struct SeparatorFrame {
 
 // Clique to star (paper Sec. 4.2.5, after LS): 3-cliques that are junctions are grouped when they share
 // an edge, and each group becomes a star around a new node at the weighted mean of its members. Only
-// triangles listed in `junctions` (sorted node triples) count: three regions that meet at one place
-// of the surface. A ring of three regions that touch pairwise in three different places is a cycle of
-// the shape (e.g. a torus cut by three separators), not a junction, and is kept. A junction of three
-// consecutive slices of one tube (`separators[i]`: node i's separator, for the first nodes) is no
-// branching: its edge between the outer two is dropped instead.
-void cliquesToStars(SkeletonGraph& graph, const std::set<std::array<size_t, 3>>& junctions,
-                    const std::vector<SeparatorFrame>& separators);
+// triangles listed in `junctions` (sorted node triples, with the place where the three meet) count: three
+// regions that meet at one place of the surface. A ring of three regions that touch pairwise in three
+// different places is a cycle of the shape (e.g. a torus cut by three separators), not a junction, and is
+// kept. A junction of three consecutive slices of one tube (`separators[i]`: node i's separator, for the
+// first nodes) is no branching: its edge between the outer two is dropped instead. A group whose
+// junctions are spread over many separator radii, around no deep middle, is a tiling of the surface
+// (`surface`: the shape's elements), not one branching: its members are joined by the shortest tree of
+// its edges instead of a star (the same cycles either way).
+void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, geometrycentral::Vector3>& junctions,
+                    const std::vector<SeparatorFrame>& separators, const std::vector<geometrycentral::Vector3>& surface);
 
 } // namespace cscd

@@ -211,7 +211,7 @@ public:
     std::vector<SeparatorFrame> frames;
     for (const Candidate* c : packed)
       frames.push_back(c->closed ? SeparatorFrame{loopCentroid(c->loop, true), loopNormal(c->loop), separatorRadius(*c)} : SeparatorFrame{});
-    cliquesToStars(graph, regions.junctions, frames);
+    cliquesToStars(graph, regions.junctions, frames, realization.samples().positions);
     realization.centre(graph, packed);
     clock.lap("graph");
 

@@ -118,17 +118,22 @@ Regions growRegions(const ElementGraph& graph, std::vector<double> distance, std
     if (l[1] != l[2]) regions.adjacent.insert({l[1], l[2]});
     if (l[0] != l[2]) regions.adjacent.insert({l[0], l[2]});
   }
+  std::map<std::array<size_t, 3>, size_t> junctionTriangles;
   for (const auto& t : graph.junctionTriangles ? *graph.junctionTriangles : graph.triangles) {
     if (anyAdopted(t)) continue;
     std::array<size_t, 3> l{label[t[0]], label[t[1]], label[t[2]]};
     std::sort(l.begin(), l.end());
-    if (l[0] != l[1] && l[1] != l[2]) regions.junctions.insert(l);
+    if (l[0] == l[1] || l[1] == l[2]) continue;
+    regions.junctions.emplace(l, geometrycentral::Vector3{0, 0, 0}).first->second +=
+        (graph.positions[t[0]] + graph.positions[t[1]] + graph.positions[t[2]]) / 3.;
+    junctionTriangles[l]++;
   }
+  for (auto& [l, place] : regions.junctions) place /= double(junctionTriangles[l]);
   // A contact too small to be a border counts where the two regions meet a third: beside a junction a
   // region can touch another in a few elements only.
   if (graph.minContact > 1) {
     std::set<std::array<size_t, 2>> atJunction;
-    for (const auto& [a, b, c] : regions.junctions) atJunction.insert({{a, b}, {b, c}, {a, c}});
+    for (const auto& [l, place] : regions.junctions) atJunction.insert({{l[0], l[1]}, {l[1], l[2]}, {l[0], l[2]}});
     for (auto it = regions.adjacent.begin(); it != regions.adjacent.end();) {
       const auto& side = sides.at(*it);
       const bool border = std::min(side[0].size(), side[1].size()) >= graph.minContact;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <array>
 #include <cstdint>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -20,7 +21,9 @@ struct Regions {
   std::vector<geometrycentral::Vector3> centroid; // area-weighted
   std::vector<double> area;
   std::set<std::array<size_t, 2>> adjacent;  // regions that touch (sorted pairs)
-  std::set<std::array<size_t, 3>> junctions; // regions that meet in one place (sorted triples)
+  // Regions that meet in one place (sorted triples), and where: the mean centroid of the triangles that
+  // have one element of each.
+  std::map<std::array<size_t, 3>, geometrycentral::Vector3> junctions;
 };
 
 constexpr uint32_t kNoRegion = std::numeric_limits<uint32_t>::max();

@@ -4,9 +4,10 @@ import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { loadCoreNode, type Core, type MeshArrays, type Skeleton, type Surface } from '../../lib/core/node.ts';
+import { loadCoreNode, type Core, type MeshArrays, type Surface } from '../../lib/core/node.ts';
 import { cscd } from './support/cli.ts';
 import { offText, readMesh, sheet } from './support/meshes.ts';
+import { degrees } from './support/topology.ts';
 import { sharedMesh } from '../paths.ts';
 
 const point = (flat: ArrayLike<number>, i: number) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]];
@@ -48,12 +49,6 @@ function vertexNear(mesh: MeshArrays, x: number, y: number): number {
     if (Math.hypot(mesh.positions[3 * v] - x, mesh.positions[3 * v + 1] - y) < Math.hypot(mesh.positions[3 * best] - x, mesh.positions[3 * best + 1] - y))
       best = v;
   return best;
-}
-
-function degrees(skeleton: Skeleton): number[] {
-  const degree = new Array(skeleton.radii.length).fill(0);
-  for (const v of skeleton.edges) degree[v]++;
-  return degree;
 }
 
 describe('a separator on a sheet', () => {

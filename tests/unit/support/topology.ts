@@ -20,6 +20,13 @@ export function closedConnectedMeshes(): { file: string; genus: number }[] {
 export const point = (flat: ArrayLike<number>, i: number) => [flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]];
 export const distance3 = (a: number[], b: number[]) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 
+/** Each node's number of edges. */
+export function degrees(skeleton: { radii: ArrayLike<number>; edges: ArrayLike<number> }): number[] {
+  const degree = new Array<number>(skeleton.radii.length).fill(0);
+  for (let i = 0; i < skeleton.edges.length; i++) degree[skeleton.edges[i]]++;
+  return degree;
+}
+
 /**
  * Connected pieces of the surface that the vertex map gives the nodes: the mesh edges whose two
  * vertices share a node join them. Equal to the number of nodes that own vertices when every node's

@@ -21,6 +21,15 @@ export const POINT_LIMIT = FACE_LIMIT / 2;
 /** The point count the page subsamples to. */
 export const SUBSAMPLE_TARGET = DECIMATE_TARGET / 2;
 
+// A cloud skeleton's seconds per point in auto mode on two workers: 3.6-3.9e-4 over the measured clouds
+// of 20K to 192K points (docs/limits.md, "Point clouds").
+const CLOUD_SKELETON_SECONDS_PER_POINT = 3.7e-4;
+
+/** Expected time, in seconds, of a point cloud's skeleton (auto mode, two workers) on `points` points. */
+export function expectedCloudSkeletonSeconds(points: number): number {
+  return CLOUD_SKELETON_SECONDS_PER_POINT * points;
+}
+
 // Least-squares fit of log(seconds) against log(vertices) over the measured tori of 50K to 1M faces:
 // seconds = SOLVER_FIT_A * vertices^SOLVER_FIT_B (within 35% of every measurement).
 const SOLVER_FIT_A = 8.0e-8;

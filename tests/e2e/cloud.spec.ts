@@ -128,7 +128,7 @@ test('a click on a point shows stage 1 on the cloud: the distance, cut locus, pa
   await expect(page.getByTestId('error')).toBeHidden();
 });
 
-test('a cloud above the point limit is computed on a subsample, said in the notes', async ({ page }) => {
+test('a cloud above the point limit is computed on a subsample, said in the notes, and on all its points when asked', async ({ page }) => {
   // 120,000 points on a Fibonacci sphere: above POINT_LIMIT (100,000), subsampled to at most 50,000.
   const n = 120_000;
   const rows = Array.from({ length: n }, (_, i) => {
@@ -142,6 +142,15 @@ test('a cloud above the point limit is computed on a subsample, said in the note
   const points = Number((await page.getByTestId('facts-vertices').textContent())?.match(/^\d+/)?.[0]);
   expect(points).toBeGreaterThan(45_000);
   expect(points).toBeLessThanOrEqual(50_000);
+  // The offer: every stage runs on the subsample meanwhile; all the points when asked.
+  await expect(page.getByTestId('limit-offer-text')).toContainText(`has 120,000 points, more than the 100,000 advised: every stage runs on a subsample of ${points.toLocaleString('en-US')}`);
+  await expect(page.getByTestId('limit-decimate')).toBeHidden();
+  await expect(page.getByTestId('stage-separators'), 'the subsample computes meanwhile').toBeEnabled();
+  await page.getByTestId('limit-full').click();
+  await expect(page.getByTestId('facts-vertices')).toHaveText(`${n} points`, { timeout: 60_000 });
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('limit-offer')).toBeHidden();
+  await expect(page.getByTestId('warnings')).not.toContainText('subsampled');
 });
 
 test('a run on a cloud streams its candidate loops and can be cancelled', async ({ page }) => {

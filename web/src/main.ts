@@ -50,13 +50,16 @@ const layerColors = new Map<string, string>();
 let opening = 0;
 let computing = 0;
 let failed = false;
+/** How an open cloud was opened (on all its points, or on a subsample above the limit) and how to open it again. */
+type OpenCloud = { reopen: (allPoints: boolean) => Promise<boolean>; allPoints: boolean };
 /**
  * The open mesh or point cloud: its file name, the sample it is (null: a file of the user's), why it
  * cannot be computed on, its notes (parser warnings, repairs), its faces and the count it was
- * decimated from (or null); for a cloud, how to open it again (with other neighbours).
+ * decimated from (or null); for a cloud, how to open it again (with other neighbours, or on all its
+ * points) and whether it was opened on all its points.
  */
 let mesh: {
-  cloud: { reopen: () => Promise<boolean> } | null;
+  cloud: OpenCloud | null;
   fileName: string;
   sample: string | null;
   surfaceError: string | null;
@@ -148,7 +151,13 @@ const whole = new WholeShape(ctx);
 
 // -- opening meshes ------------------------------------------------------------------------------
 
-async function openBytes(fileName: string, bytes: ArrayBuffer, sample: string | null, reopen: () => Promise<boolean>): Promise<boolean> {
+async function openBytes(
+  fileName: string,
+  bytes: ArrayBuffer,
+  sample: string | null,
+  reopen: (allPoints: boolean) => Promise<boolean>,
+  allPoints = false,
+): Promise<boolean> {
   if (whole.running) whole.invalidate(); // it would hold up the open; a finished result stays if the file is refused
   opening++;
   failed = false;
@@ -156,8 +165,8 @@ async function openBytes(fileName: string, bytes: ArrayBuffer, sample: string | 
   panel.setStatus(`opening ${fileName}…`, true);
   updateState();
   try {
-    const reply = await client.open(fileName, bytes, params.neighbours);
-    if (reply.shape === 'cloud') showCloud(reply, reopen);
+    const reply = await client.open(fileName, bytes, params.neighbours, allPoints);
+    if (reply.shape === 'cloud') showCloud(reply, { reopen, allPoints });
     else showMesh(reply, sample);
     return true;
   } catch (error) {
@@ -191,13 +200,13 @@ function showMesh(reply: OpenedReply, sample: string | null): void {
 /** What a cloud is not computed on yet, in its notes. */
 const CLOUD_NOTE = 'Point cloud: every stage runs on it (CSCD-PC); the reconstruction error is measured against its points';
 
-function showCloud(reply: CloudOpenedReply, reopen: () => Promise<boolean>): void {
+function showCloud(reply: CloudOpenedReply, cloud: OpenCloud): void {
   const t = reply.timings;
   const notes = [...fileNotes(reply), CLOUD_NOTE];
-  mesh = { cloud: { reopen }, fileName: reply.fileName, sample: null, surfaceError: null, openMs: t.parseMs + t.inspectMs, notes, faces: 0, decimatedFrom: null };
+  mesh = { cloud, fileName: reply.fileName, sample: null, surfaceError: null, openMs: t.parseMs + t.inspectMs, notes, faces: 0, decimatedFrom: null };
   showOpened(reply, new PointsLayer(reply.positions, viewer.restPixelRatio), null, notes);
   panel.setCloudFacts(reply.facts);
-  offer.hide();
+  offer.showCloud(reply.subsampledFrom, reply.facts.points);
 }
 
 /** What a mesh and a cloud just opened share in the view and the panel. */
@@ -251,13 +260,24 @@ function showShape(layer: ShapeLayer): void {
   viewer.surface!.setIsolines(isolinesBox.checked);
 }
 
-// -- meshes above the size limit: decimate, or compute on the full mesh -------------------------------
+// -- shapes above the size limit: decimate a mesh or compute on it whole; a cloud's points all --------
 
 offer.onDecimate = (targetFaces) => void decimateMesh(targetFaces);
 offer.onFull = () => {
+  if (mesh?.cloud) return void openAllPoints(mesh.cloud);
   offer.hide();
   refresh();
 };
+
+/** The cloud opened again on all its points; the offer stays if that fails (the subsample stays open). */
+async function openAllPoints(cloud: OpenCloud): Promise<void> {
+  offer.setBusy(true);
+  try {
+    await cloud.reopen(true);
+  } finally {
+    offer.setBusy(false);
+  }
+}
 
 async function decimateMesh(targetFaces: number): Promise<void> {
   offer.setBusy(true);
@@ -281,7 +301,7 @@ statusCancel.addEventListener('click', () => {
   client.cancelRunning();
 });
 
-async function openFile(file: File): Promise<void> {
+async function openFile(file: File, allPoints = false): Promise<void> {
   let bytes: ArrayBuffer;
   try {
     bytes = await file.arrayBuffer();
@@ -290,14 +310,14 @@ async function openFile(file: File): Promise<void> {
     updateState();
     return;
   }
-  await openBytes(file.name, bytes, null, () => openFile(file).then(() => true));
+  await openBytes(file.name, bytes, null, (all) => openFile(file, all).then(() => true), allPoints);
 }
 
-async function openSample(sample: Sample): Promise<boolean> {
+async function openSample(sample: Sample, allPoints = false): Promise<boolean> {
   try {
     const response = await fetch(`samples/${sample.file}`);
     if (!response.ok) throw new Error(`HTTP ${response.status} for samples/${sample.file}`);
-    return await openBytes(sample.file, await response.arrayBuffer(), sample.name, () => openSample(sample));
+    return await openBytes(sample.file, await response.arrayBuffer(), sample.name, (all) => openSample(sample, all), allPoints);
   } catch (error) {
     fail(`Could not load the sample mesh ${sample.file}`, error);
     updateState();
@@ -485,7 +505,7 @@ params.onChange = (keys) => {
   refresh();
 };
 // The cloud's neighbourhoods are made when it is opened: a change opens it again, every result dropped.
-params.onNeighboursChange = () => void mesh?.cloud?.reopen();
+params.onNeighboursChange = () => void mesh?.cloud?.reopen(mesh.cloud.allPoints);
 // A run setting changes how the next run is computed, not its result: the skeleton shown stays.
 params.onSettingsChange = () => refresh();
 

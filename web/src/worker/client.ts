@@ -71,7 +71,7 @@ interface Pending {
  * coarse), or the arrays of the decimated mesh as the worker computed on them.
  */
 type KeptMesh =
-  | { fileName: string; bytes: ArrayBuffer; neighbours: number }
+  | { fileName: string; bytes: ArrayBuffer; neighbours: number; allPoints: boolean }
   | { fileName: string; positions: Float64Array; triangles: Uint32Array; refined: Refinement | null };
 
 const UNCANCELLABLE = new Set<WorkerRequest['type']>(['open', 'restore', 'write']);
@@ -111,13 +111,13 @@ export class GeometryClient {
   }
 
   /**
-   * Opens a mesh or point-cloud file in the worker (a cloud with `neighbours` per point). `bytes` is
-   * transferred (detached) after a copy is kept.
+   * Opens a mesh or point-cloud file in the worker (a cloud with `neighbours` per point, and above
+   * POINT_LIMIT on a subsample unless `allPoints`). `bytes` is transferred (detached) after a copy is kept.
    */
-  async open(fileName: string, bytes: ArrayBuffer, neighbours: number): Promise<ReplyFor['open']> {
+  async open(fileName: string, bytes: ArrayBuffer, neighbours: number, allPoints: boolean): Promise<ReplyFor['open']> {
     const kept = bytes.slice(0);
-    const reply = await this.request({ type: 'open', fileName, bytes, withArrays: true, neighbours }, [bytes]);
-    this.current = { fileName, bytes: kept, neighbours };
+    const reply = await this.request({ type: 'open', fileName, bytes, withArrays: true, neighbours, allPoints }, [bytes]);
+    this.current = { fileName, bytes: kept, neighbours, allPoints };
     return reply;
   }
 
@@ -266,7 +266,7 @@ export class GeometryClient {
     const kept = this.current;
     if (kept && 'bytes' in kept) {
       const copy = kept.bytes.slice(0);
-      restored = this.request({ type: 'open', fileName: kept.fileName, bytes: copy, withArrays: false, neighbours: kept.neighbours }, [copy]);
+      restored = this.request({ type: 'open', fileName: kept.fileName, bytes: copy, withArrays: false, neighbours: kept.neighbours, allPoints: kept.allPoints }, [copy]);
     } else if (kept) {
       const positions = kept.positions.slice(), triangles = kept.triangles.slice();
       restored = this.request({ type: 'restore', fileName: kept.fileName, positions, triangles, refined: kept.refined }, [positions.buffer, triangles.buffer]);

@@ -23,6 +23,8 @@ export interface OpenRequest {
   withArrays: boolean;
   /** k of a point cloud's neighbourhoods (the `neighbours` option), should the file be one. */
   neighbours: number;
+  /** A point cloud above POINT_LIMIT is computed on all its points (the offer's choice), not on a subsample. */
+  allPoints: boolean;
 }
 
 /**
@@ -178,6 +180,8 @@ export interface CloudOpenedReply {
   warnings: string[];
   /** What the checks on load did (lib/io/cloud-check.ts) and a subsampling, one sentence each. */
   repairs: string[];
+  /** The cloud's point count when it was subsampled to compute on (above POINT_LIMIT, without `allPoints`), else null. */
+  subsampledFrom: number | null;
   timings: OpenTimings;
 }
 

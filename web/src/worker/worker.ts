@@ -203,16 +203,18 @@ async function open(request: OpenRequest): Promise<void> {
 
 /**
  * A point cloud: checked as the CLI checks it (a bad cloud is refused with its message), subsampled
- * above POINT_LIMIT (to SUBSAMPLE_TARGET points, said among the repairs: the page computes on the
- * subsample, as the CLI advises), then opened in the core with `neighbours`.
+ * above POINT_LIMIT unless `allPoints` (to SUBSAMPLE_TARGET points, said among the repairs: the page
+ * computes on the subsample, as the CLI advises, and offers all the points), then opened in the core
+ * with `neighbours`.
  */
 async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: number): Promise<void> {
   const { id, fileName, neighbours } = request;
   const { cloud: checked, repairs } = checkCloud(parsed, neighbours);
   const points = checked.positions.length / 3;
-  if (points > POINT_LIMIT) progress(id, 'parse', `subsampling ${points} points to ${SUBSAMPLE_TARGET}…`); // seconds at a million
-  const cloud = points > POINT_LIMIT ? subsampleCloud(checked, SUBSAMPLE_TARGET, defaultOptions.seed) : checked;
-  if (cloud !== checked) {
+  const subsample = points > POINT_LIMIT && !request.allPoints;
+  if (subsample) progress(id, 'parse', `subsampling ${points} points to ${SUBSAMPLE_TARGET}…`); // seconds at a million
+  const cloud = subsample ? subsampleCloud(checked, SUBSAMPLE_TARGET, defaultOptions.seed) : checked;
+  if (subsample) {
     repairs.push(`subsampled from ${points} to ${cloud.positions.length / 3} points (Poisson-disk, seed ${defaultOptions.seed}): above ${POINT_LIMIT} points the skeleton takes too long`);
   }
   const parseMs = performance.now() - started;
@@ -234,6 +236,7 @@ async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: num
       facts: currentCloud.cloud.facts,
       warnings: parsed.warnings,
       repairs,
+      subsampledFrom: subsample ? points : null,
       timings: { parseMs, inspectMs },
     },
     transferables(positions),

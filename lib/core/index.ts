@@ -42,6 +42,7 @@ import {
 
 export * from './types.ts';
 import { defaultOptions } from './options.ts';
+import { CORE_MEMORY } from './pool-size.ts';
 export { defaultOptions };
 
 /** Turns the core's failures into CoreError; `unwrap(x)` returns x when it is not one. */
@@ -52,8 +53,7 @@ const isFailure = (x: unknown): x is CoreFailure => typeof x === 'object' && x !
 /** WebAssembly memory pages are 64 KiB. */
 const PAGE_BYTES = 65536;
 /** The core's own maximum (wasm/CMakeLists.txt -sMAXIMUM_MEMORY) and its initial size (-sINITIAL_MEMORY). */
-const CORE_MAXIMUM_MB = 4096;
-const CORE_INITIAL_MB = 64;
+const { initialMB: CORE_INITIAL_MB, maximumMB: CORE_MAXIMUM_MB } = CORE_MEMORY;
 
 /** What shrinks each kind of shape when the core runs out of memory. */
 const SHRINK = { mesh: 'decimate it to fewer faces', 'point cloud': 'subsample it to fewer points' } as const;

@@ -6,9 +6,10 @@ import type { RunSettings } from './options.ts';
 /**
  * A core's peak memory (Core.memoryMB) after a skeleton of 12 sources in rounds of 4, fitted as
  * a + b·V over 11 shared meshes of 2.9K-48K vertices (scripts/core-memory.ts, docs/parallel.md;
- * measured again 2026-12-03 with the loop patches' flat arrays); no core is below its initial 64 MB.
+ * measured again 2026-12-03 with the loop patches' flat arrays); no core is below its initial 64 MB,
+ * none above wasm32's 4096 MB (its default limit, lib/core/index.ts).
  */
-export const CORE_MEMORY = Object.freeze({ baseMB: 32, perVertexMB: 0.00536, initialMB: 64 });
+export const CORE_MEMORY = Object.freeze({ baseMB: 32, perVertexMB: 0.00536, initialMB: 64, maximumMB: 4096 });
 
 /** Estimated memory of one thread's core on a mesh of `vertices` vertices (the mesh computed on). */
 export const coreMemoryMB = (vertices: number) => Math.max(CORE_MEMORY.initialMB, CORE_MEMORY.baseMB + CORE_MEMORY.perVertexMB * vertices);

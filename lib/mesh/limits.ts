@@ -3,6 +3,7 @@
  * docs/limits.md (scripts/measure-limits.ts), and how large a point cloud is let in: shared by the
  * page (the decimation and subsampling offers) and the CLI (its warnings), so both say the same.
  */
+import { CLOUD_VERTICES_PER_POINT, coreMemoryMB } from '../core/pool-size.ts';
 
 /** Above this many faces the page offers to decimate and the CLI warns: the solver then takes over ~6 s. */
 export const FACE_LIMIT = 200_000;
@@ -28,6 +29,15 @@ const CLOUD_SKELETON_SECONDS_PER_POINT = 3.7e-4;
 /** Expected time, in seconds, of a point cloud's skeleton (auto mode, two workers) on `points` points. */
 export function expectedCloudSkeletonSeconds(points: number): number {
   return CLOUD_SKELETON_SECONDS_PER_POINT * points;
+}
+
+// A whole skeleton's core (auto mode, stage 2 included) against the pool's rule for a cloud (lib/core/pool-size.ts,
+// fitted on 12 sources): measured 1.37 and 1.40 times it at 48K and 96K points (docs/limits.md, "Point clouds").
+const CLOUD_SKELETON_MEMORY_FACTOR = 1.4;
+
+/** Expected peak memory, in MB, of the core that computes a point cloud's skeleton on `points` points. */
+export function expectedCloudCoreMB(points: number): number {
+  return CLOUD_SKELETON_MEMORY_FACTOR * coreMemoryMB(CLOUD_VERTICES_PER_POINT * points);
 }
 
 // Least-squares fit of log(seconds) against log(vertices) over the measured tori of 50K to 1M faces:

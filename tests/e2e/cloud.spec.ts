@@ -128,15 +128,20 @@ test('a click on a point shows stage 1 on the cloud: the distance, cut locus, pa
   await expect(page.getByTestId('error')).toBeHidden();
 });
 
-test('a cloud above the point limit is computed on a subsample, said in the notes, and on all its points when asked', async ({ page }) => {
-  // 120,000 points on a Fibonacci sphere: above POINT_LIMIT (100,000), subsampled to at most 50,000.
-  const n = 120_000;
+/** `n` points on a Fibonacci sphere, as an XYZ file. */
+function sphereXyz(n: number): Buffer {
   const rows = Array.from({ length: n }, (_, i) => {
     const z = 1 - (2 * i + 1) / n, r = Math.sqrt(1 - z * z), a = i * 2.399963229728653;
     return `${(r * Math.cos(a)).toFixed(6)} ${(r * Math.sin(a)).toFixed(6)} ${z.toFixed(6)}`;
   });
+  return Buffer.from(rows.join('\n'));
+}
+
+test('a cloud above the point limit is computed on a subsample, said in the notes, and on all its points when asked', async ({ page }) => {
+  // 120,000 points: above POINT_LIMIT (100,000), subsampled to at most 50,000.
+  const n = 120_000;
   await openPage(page);
-  await page.getByTestId('file-input').setInputFiles({ name: 'sphere.xyz', mimeType: 'text/plain', buffer: Buffer.from(rows.join('\n')) });
+  await page.getByTestId('file-input').setInputFiles({ name: 'sphere.xyz', mimeType: 'text/plain', buffer: sphereXyz(n) });
   await expect(page.getByTestId('warnings')).toContainText(`Repaired: subsampled from ${n} to`, { timeout: 60_000 });
   await waitForState(page, 'ready');
   const points = Number((await page.getByTestId('facts-vertices').textContent())?.match(/^\d+/)?.[0]);
@@ -151,6 +156,17 @@ test('a cloud above the point limit is computed on a subsample, said in the note
   await waitForState(page, 'ready');
   await expect(page.getByTestId('limit-offer')).toBeHidden();
   await expect(page.getByTestId('warnings')).not.toContainText('subsampled');
+});
+
+test('a cloud whose points all would not fit in a core is not offered whole', async ({ page }) => {
+  // Cores capped at 640 MB: the 49,000-point subsample opens (about 400 MB), a skeleton of all 120,000 points would need about 1.4 GB.
+  await openPage(page, '/?memoryLimitMB=640');
+  await page.getByTestId('file-input').setInputFiles({ name: 'sphere.xyz', mimeType: 'text/plain', buffer: sphereXyz(120_000) });
+  await expect(page.getByTestId('warnings')).toContainText('Repaired: subsampled from 120000 to', { timeout: 60_000 });
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('limit-offer-text')).toContainText('MB in a core, more than its 640 MB');
+  await expect(page.getByTestId('limit-full')).toBeHidden();
+  await expect(page.getByTestId('stage-separators')).toBeEnabled();
 });
 
 test('a run on a cloud streams its candidate loops and can be cancelled', async ({ page }) => {

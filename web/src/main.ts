@@ -27,6 +27,7 @@ import { PointsLayer, SurfaceLayer, type ShapeLayer } from './viewer/layers.ts';
 import { Viewer } from './viewer/viewer.ts';
 import { WholeShape } from './whole-shape.ts';
 import { GeometryClient, WorkerError } from './worker/client.ts';
+import { CORE_MEMORY } from '../../lib/core/pool-size.ts';
 import type { Refinement } from '../../lib/core/types.ts';
 import type { CloudOpenedReply, DecimatedReply, OpenedReply, SkeletonReply, WriteRequest } from './worker/protocol.ts';
 
@@ -206,7 +207,7 @@ function showCloud(reply: CloudOpenedReply, cloud: OpenCloud): void {
   mesh = { cloud, fileName: reply.fileName, sample: null, surfaceError: null, openMs: t.parseMs + t.inspectMs, notes, faces: 0, decimatedFrom: null };
   showOpened(reply, new PointsLayer(reply.positions, viewer.restPixelRatio), null, notes);
   panel.setCloudFacts(reply.facts);
-  offer.showCloud(reply.subsampledFrom, reply.facts.points);
+  offer.showCloud(reply.subsampledFrom, reply.facts.points, testHooks.memoryLimitMB ?? CORE_MEMORY.maximumMB);
 }
 
 /** What a mesh and a cloud just opened share in the view and the panel. */

@@ -5,7 +5,7 @@
  * is computed on a subsample from the start (opening it whole is what takes long): the offer is to
  * compute on all its points instead, with the skeleton's time to expect.
  */
-import { aboutDuration, DECIMATE_TARGET, expectedCloudSkeletonSeconds, POINT_LIMIT, sizeWarning } from '../../../lib/mesh/limits.ts';
+import { aboutDuration, DECIMATE_TARGET, expectedCloudCoreMB, expectedCloudSkeletonSeconds, POINT_LIMIT, sizeWarning } from '../../../lib/mesh/limits.ts';
 import { byTestId } from './panel.ts';
 
 export class LimitOffer {
@@ -46,14 +46,21 @@ export class LimitOffer {
     this.full.textContent = 'Compute on the full mesh';
   }
 
-  /** Shows the offer for a cloud computed on a subsample of `points` of its `subsampledFrom` points (null: not subsampled, hidden). */
-  showCloud(subsampledFrom: number | null, points: number): void {
+  /**
+   * Shows the offer for a cloud computed on a subsample of `points` of its `subsampledFrom` points (null:
+   * not subsampled, hidden); all of them are offered only if a core of `coreLimitMB` can hold them.
+   */
+  showCloud(subsampledFrom: number | null, points: number, coreLimitMB: number): void {
     this.showFor(true, subsampledFrom !== null);
     if (subsampledFrom === null) return;
     const count = (n: number) => n.toLocaleString('en-US');
+    const neededMB = expectedCloudCoreMB(subsampledFrom), fits = neededMB <= coreLimitMB;
+    const whole = fits
+      ? `A skeleton of all of them takes ${aboutDuration(expectedCloudSkeletonSeconds(subsampledFrom))} (measured on two workers).`
+      : `A skeleton of all of them would need about ${count(Math.round(neededMB))} MB in a core, more than its ${count(coreLimitMB)} MB: subsample the file to fewer points to compute on more of them.`;
     byTestId('limit-offer-text').textContent =
-      `This point cloud has ${count(subsampledFrom)} points, more than the ${count(POINT_LIMIT)} advised: every stage runs on a subsample of ${count(points)}. ` +
-      `A skeleton of all of them takes ${aboutDuration(expectedCloudSkeletonSeconds(subsampledFrom))} (measured on two workers).`;
+      `This point cloud has ${count(subsampledFrom)} points, more than the ${count(POINT_LIMIT)} advised: every stage runs on a subsample of ${count(points)}. ${whole}`;
+    this.full.hidden = !fits;
     this.full.textContent = `Compute on all ${count(subsampledFrom)} points`;
   }
 
@@ -65,6 +72,7 @@ export class LimitOffer {
   private showFor(cloud: boolean, shown: boolean): void {
     this.forCloud = cloud;
     this.box.hidden = !shown;
+    this.full.hidden = false;
     this.decimate.hidden = cloud;
     this.target.closest('label')!.hidden = cloud;
   }

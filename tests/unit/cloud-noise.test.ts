@@ -140,7 +140,7 @@ describe('noisy clouds', () => {
   }, 60_000);
 
   it('joins the tiles of a noisy cloud by their shortest edges, not by one star across the shape', () => {
-    // On the deer's antlers under 1% noise the packed loops go round the noise and their regions tile the
+    // On the deer under 1% noise the packed loops go round the noise and their regions tile the whole
     // surface; the triangles where three tiles meet chain into one group, which made one star: in its
     // 7750-point subsample at n = 60 a hub of degree 15 and 14 at seeds 1 and 2 (78 spokes on the whole cloud). Its
     // junctions spread over many separator radii around no deep middle: its tiles are joined by the

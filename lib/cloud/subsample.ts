@@ -25,13 +25,27 @@ interface Run {
   kept: number;
 }
 
+/** A subsample and the points it left out, each with the kept point that stands for it. */
+export interface Subsample<C extends CloudArrays> {
+  cloud: C;
+  /** Input indices of the points left out, in a shuffled order (its first few are spread like all of them). */
+  leftOut: Int32Array;
+  /** For each point left out, the index in `cloud` of a kept point within the subsample's radius of it. */
+  standIn: Int32Array;
+}
+
 /**
  * At most `targetCount` points of a cloud with finite coordinates (those of checkCloud), in their
  * input order, with their normals; the cloud itself when it has no more points than that.
  */
 export function subsampleCloud<C extends CloudArrays>(cloud: C, targetCount: number, seed: number): C {
+  return subsample(cloud, targetCount, seed).cloud;
+}
+
+/** subsampleCloud, with the points left out and their stand-ins (the page draws them all). */
+export function subsample<C extends CloudArrays>(cloud: C, targetCount: number, seed: number): Subsample<C> {
   const n = cloud.positions.length / 3;
-  if (n <= targetCount) return cloud;
+  if (n <= targetCount) return { cloud, leftOut: new Int32Array(0), standIn: new Int32Array(0) };
   const order = shuffled(n, seed);
   const positions = new Float64Array(3 * n);
   order.forEach((i, j) => positions.set(cloud.positions.subarray(3 * i, 3 * i + 3), 3 * j));
@@ -58,11 +72,27 @@ export function subsampleCloud<C extends CloudArrays>(cloud: C, targetCount: num
   // Only when every run kept too many (none does at a radius as large as the cloud).
   below ??= select(boundingBoxDiagonal(cloud.positions));
 
-  const kept = new Int32Array(below.kept);
-  let k = 0;
-  for (let j = 0; j < n; j++) if (below.to[j] === j) kept[k++] = order[j];
-  kept.sort();
-  return { ...cloud, positions: gather(cloud.positions, kept, Float64Array), normals: cloud.normals && gather(cloud.normals, kept, Float32Array) };
+  // The kept points in input order and each one's place among them; those left out in the shuffled
+  // order, so that any first few of them are spread like all of them.
+  const isKept = new Uint8Array(n);
+  order.forEach((i, j) => (isKept[i] = below.to[j] === j ? 1 : 0));
+  const kept = new Int32Array(below.kept), placeOf = new Int32Array(n);
+  for (let i = 0, k = 0; i < n; i++) {
+    if (!isKept[i]) continue;
+    placeOf[i] = k;
+    kept[k++] = i;
+  }
+  const leftOut = new Int32Array(n - below.kept), standIn = new Int32Array(n - below.kept);
+  for (let j = 0, l = 0; j < n; j++) {
+    if (isKept[order[j]]) continue;
+    leftOut[l] = order[j];
+    standIn[l++] = placeOf[order[below.to[j]]]; // weld joined it to a kept point within the radius
+  }
+  return {
+    cloud: { ...cloud, positions: gather(cloud.positions, kept, Float64Array), normals: cloud.normals && gather(cloud.normals, kept, Float32Array) },
+    leftOut,
+    standIn,
+  };
 }
 
 /** 0 .. n-1 in the order of a Fisher-Yates shuffle drawn from the seed. */

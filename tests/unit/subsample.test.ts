@@ -1,6 +1,6 @@
 // Subsampling of large point clouds (lib/cloud/subsample.ts) and the size limit that offers it.
 import { describe, expect, it } from 'vitest';
-import { subsampleCloud } from '../../lib/cloud/subsample.ts';
+import { subsample, subsampleCloud } from '../../lib/cloud/subsample.ts';
 import { POINT_LIMIT, SUBSAMPLE_TARGET, cloudSizeWarning } from '../../lib/mesh/limits.ts';
 import { nearestDistances, spherePoints } from './support/clouds.ts';
 
@@ -53,6 +53,34 @@ describe('subsampleCloud', () => {
     // Random picks would put some points almost on top of others.
     expect(closest).toBeGreaterThan(0.6 * median);
     expect(Math.max(...coverDistances(sphere.positions, kept))).toBeLessThan(closest);
+  });
+
+  it('leaves out every other point, each with a kept stand-in nearer it than any two kept points are to each other', () => {
+    const { cloud, leftOut, standIn } = subsample(sphere, 1000, 3);
+    expect(Array.from(cloud.positions)).toEqual(Array.from(subsampleCloud(sphere, 1000, 3).positions));
+    const kept = cloud.positions.length / 3;
+    expect(leftOut.length).toBe(20_000 - kept);
+    expect(new Set(leftOut).size).toBe(leftOut.length);
+    const keptKeys = new Set(Array.from({ length: kept }, (_, p) => key(cloud.positions, p)));
+    expect(Array.from(leftOut).some((i) => keptKeys.has(key(sphere.positions, i)))).toBe(false);
+    const closest = Math.min(...nearestDistances(cloud.positions));
+    const far = Array.from(leftOut).map((i, j) => {
+      const p = standIn[j];
+      return Math.hypot(...[0, 1, 2].map((c) => sphere.positions[3 * i + c] - cloud.positions[3 * p + c]));
+    });
+    expect(Math.max(...far)).toBeLessThan(closest);
+    expect(subsample(sphere, 20_000, 1).leftOut).toHaveLength(0);
+  });
+
+  it('leaves points out in a shuffled order: the first few spread like all of them, whatever the input order', () => {
+    // The sphere's points from south to north, as a scan's lines come.
+    const south = Array.from({ length: 20_000 }, (_, i) => i).sort((a, b) => sphere.positions[3 * a + 2] - sphere.positions[3 * b + 2]);
+    const sorted = { positions: Float64Array.from(south.flatMap((i) => Array.from(sphere.positions.subarray(3 * i, 3 * i + 3)))), normals: null };
+    const { leftOut } = subsample(sorted, 1000, 3);
+    const firstTenth = Array.from(leftOut.subarray(0, leftOut.length / 10));
+    const north = firstTenth.filter((i) => sorted.positions[3 * i + 2] > 0).length / firstTenth.length;
+    expect(north).toBeGreaterThan(0.4);
+    expect(north).toBeLessThan(0.6);
   });
 
   it('thins dense parts and keeps sparse ones', () => {

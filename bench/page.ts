@@ -10,16 +10,16 @@
 // the page's workers setting, in its address, and the Node runner's pool.
 //
 //   node --import tsx bench/page.ts [--repeats 3] [--port 4180] [--no-build] [--workers K] [--draw-ahead R] [meshes...]
-import { spawn, spawnSync } from 'node:child_process';
+import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, writeFileSync, existsSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
-import { chromium } from '@playwright/test';
 import { defaultOptions, OPTIONS, optionProblem, parseSettingText, WORKERS } from '../lib/core/options.ts';
 import { parseMesh } from '../lib/io/index.ts';
 import { median } from './metrics.ts';
+import { withPreview } from './preview.ts';
 import { claimResultName } from './result-name.ts';
 
 const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
@@ -65,16 +65,9 @@ if (!values['no-build']) {
   if (build.status !== 0) throw new Error('vite build failed');
 }
 if (!existsSync(path.join(repoRoot, 'dist', 'index.html'))) throw new Error('no production build in dist/ (run without --no-build)');
-const server = spawn('npx', ['vite', 'preview', '--port', String(port), '--strictPort'], { cwd: repoRoot, stdio: 'ignore', detached: true });
-const url = `http://localhost:${port}/`;
-const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium', args: ['--no-sandbox', '--disable-gpu'] });
 type Row = { mesh: string; page: number[]; node: number[]; pageSources: number; nodeSources: number };
 const rows: Row[] = [];
-try {
-  for (let k = 0; k < 60; k++) {
-    if (await fetch(url).then((r) => r.ok, () => false)) break;
-    await new Promise((r) => setTimeout(r, 500));
-  }
+await withPreview(port, async (browser, url) => {
   for (const file of files) {
     const vertices = parseMesh(readFileSync(file), file).positions.length / 3;
     const row: Row = { mesh: path.basename(file, '.ply'), page: [], node: [], pageSources: 0, nodeSources: 0 };
@@ -107,14 +100,7 @@ try {
     }
     rows.push(row);
   }
-} finally {
-  await browser.close();
-  try {
-    process.kill(-server.pid!);
-  } catch {
-    // already gone
-  }
-}
+});
 
 const ms = (x: number) => String(Math.round(x));
 const ratios = rows.map((r) => median(r.page)! / median(r.node)!);

@@ -6,12 +6,11 @@
 // and prints the page's frames per second (BeginMainFrame), which every change to the page costs.
 //
 //   npx vite build && node --import tsx scripts/page-threads.ts [--workers 2] [--every 1000] [--trace] [--port 4190] [mesh]
-import { spawn } from 'node:child_process';
 import { readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
-import { chromium } from '@playwright/test';
+import { withPreview } from '../bench/preview.ts';
 
 const { positionals, values } = parseArgs({
   allowPositionals: true,
@@ -54,11 +53,7 @@ const group = (key: string) => {
   return name === 'DedicatedWorker' ? `worker ${tid}` : `${type === 'gpu-process' ? 'gpu' : type}:${name}`;
 };
 
-const server = spawn('npx', ['vite', 'preview', '--port', values.port, '--strictPort'], { stdio: 'ignore', detached: true });
-const url = `http://localhost:${values.port}/`;
-const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium', args: ['--no-sandbox', '--disable-gpu'] });
-try {
-  for (let k = 0; k < 60 && !(await fetch(url).then((r) => r.ok, () => false)); k++) await new Promise((r) => setTimeout(r, 500));
+await withPreview(Number(values.port), async (browser, url) => {
   const page = await browser.newPage({ viewport: { width: 1280, height: 720 } });
   await page.goto(`${url}#workers=${values.workers}`);
   await page.locator('body[data-state="ready"]').waitFor({ timeout: 120_000 });
@@ -93,11 +88,4 @@ try {
     for (const ts of frames) perSecond.set(Math.floor((ts - start) / 1e6), (perSecond.get(Math.floor((ts - start) / 1e6)) ?? 0) + 1);
     console.log(`frames per second from the first: ${[...perSecond.values()].join(' ')}`);
   }
-} finally {
-  await browser.close();
-  try {
-    process.kill(-server.pid!);
-  } catch {
-    // already gone
-  }
-}
+});

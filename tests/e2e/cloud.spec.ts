@@ -151,14 +151,17 @@ test('a cloud above the point limit is computed on a subsample, said in the note
   await expect(page.getByTestId('limit-offer-text')).toContainText(`has 120,000 points, more than the 100,000 advised: every stage runs on a subsample of ${points.toLocaleString('en-US')}`);
   await expect(page.getByTestId('limit-decimate')).toBeHidden();
   await expect(page.getByTestId('stage-separators'), 'the subsample computes meanwhile').toBeEnabled();
+  // Drawn: the subsample and points left out of it, 100,000 in all on a software renderer (these tests'), all on a GPU.
+  expect(await page.evaluate(() => window.cscd!.cloudPoints())).toEqual({ drawn: 100_000, computedOn: points });
   await page.getByTestId('limit-full').click();
   await expect(page.getByTestId('facts-vertices')).toHaveText(`${n} points`, { timeout: 60_000 });
   await waitForState(page, 'ready');
+  expect(await page.evaluate(() => window.cscd!.cloudPoints())).toEqual({ drawn: n, computedOn: n });
   await expect(page.getByTestId('limit-offer')).toBeHidden();
   await expect(page.getByTestId('warnings')).not.toContainText('subsampled');
 });
 
-test('a cloud whose points all would not fit in a core is not offered whole', async ({ page }) => {
+test('a cloud whose points all would not fit in a core is not offered whole, and is drawn with points left out of its subsample', async ({ page }) => {
   // Cores capped at 640 MB: the 49,000-point subsample opens (about 400 MB), a skeleton of all 120,000 points would need about 1.4 GB.
   await openPage(page, '/?memoryLimitMB=640');
   await page.getByTestId('file-input').setInputFiles({ name: 'sphere.xyz', mimeType: 'text/plain', buffer: sphereXyz(120_000) });
@@ -167,6 +170,20 @@ test('a cloud whose points all would not fit in a core is not offered whole', as
   await expect(page.getByTestId('limit-offer-text')).toContainText('MB in a core, more than its 640 MB');
   await expect(page.getByTestId('limit-full')).toBeHidden();
   await expect(page.getByTestId('stage-separators')).toBeEnabled();
+  // Points left out of the subsample are drawn too (up to 100,000 in all on a software renderer, as here);
+  // a click on any point drawn is a source among the points computed on.
+  const points = await page.evaluate(() => window.cscd!.cloudPoints());
+  expect(points?.drawn).toBe(100_000);
+  expect(points?.computedOn).toBeLessThanOrEqual(50_000);
+  // About half the points drawn are left out of the subsample: of four clicks some fall on them.
+  const box = (await page.getByTestId('viewport-canvas').boundingBox())!;
+  for (let k = 1; k <= 4; k++) {
+    await page.mouse.click(box.x + box.width / 2 + 9 * k, box.y + box.height / 2);
+    await expect(body(page)).toHaveAttribute('data-separator-runs', String(k), { timeout: 60_000 });
+    await waitForState(page, 'ready');
+    expect(Number(await page.getByTestId('distance-source').textContent())).toBeLessThan(points!.computedOn);
+  }
+  expect((await canvasStats(page)).hueBins, 'every point drawn coloured by the distance').toBeGreaterThanOrEqual(5);
 });
 
 test('a run on a cloud streams its candidate loops and can be cancelled', async ({ page }) => {

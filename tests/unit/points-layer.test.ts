@@ -1,5 +1,6 @@
 // The page's point-cloud layer (web/src/viewer/layers.ts PointsLayer): one THREE.Points over the
-// worker's array (no copy), sprites of a fixed screen size, region colours mixed into the base colour.
+// worker's array (no copy), sprites of a fixed screen size, region colours mixed into the base colour;
+// a subsampled cloud's left-out points drawn after it, as their stand-ins.
 import * as THREE from 'three';
 import { describe, expect, it } from 'vitest';
 import { PointsLayer } from '../../web/src/viewer/layers.ts';
@@ -31,6 +32,43 @@ describe('PointsLayer', () => {
     expect(colour()[1]).toBeCloseTo(base[1] / 2, 6);
     layer.setRegionColors(null);
     expect(colour()).toEqual(base);
+  });
+
+  it('draws the points a subsample left out after those computed on, coloured and picked as their stand-ins', () => {
+    const leftOut = { positions: new Float32Array([0.1, 0, 0, 0, 1.9, 0]), standIn: new Uint32Array([0, 2]) };
+    const layer = new PointsLayer(positions, 1, leftOut);
+    expect(layer.vertexCount, 'the stages index the points computed on').toBe(3);
+    expect(layer.drawnCount).toBe(5);
+    expect(Array.from(layer.geometry.getAttribute('position').array)).toEqual([...positions, ...leftOut.positions]);
+    expect([0, 1, 2, 3, 4].map((i) => layer.computedPoint(i))).toEqual([0, 1, 2, 0, 2]);
+    const colour = (i: number) => Array.from((layer.geometry.getAttribute('color').array as Float32Array).subarray(3 * i, 3 * i + 3));
+    layer.setScalarField({ values: new Float32Array([0, 1, 2]), max: 2, isolineSpacing: 0 });
+    layer.setScalarVisible(true);
+    expect(colour(0)).not.toEqual(colour(2));
+    expect(colour(3)).toEqual(colour(0));
+    expect(colour(4)).toEqual(colour(2));
+    layer.setRegionColors(new Float32Array([1, 0, 0, 0, 1, 0, 0, 0, 1]), 1);
+    layer.setScalarVisible(false);
+    expect([colour(3), colour(4)]).toEqual([[1, 0, 0], [0, 0, 1]]);
+    layer.setMoving(true);
+    expect(layer.geometry.drawRange.count, 'moving: the computed points alone').toBe(3);
+    // A ray down onto the left-out point at (0, 1.9, 0) picks its stand-in, point 2, also while moving.
+    const raycaster = new THREE.Raycaster(new THREE.Vector3(0, 1.9, 5), new THREE.Vector3(0, 0, -1));
+    raycaster.params.Points.threshold = 0.05;
+    expect(layer.intersect(raycaster)?.point).toBe(2);
+    expect(layer.intersect(raycaster)?.at.y).toBeCloseTo(1.9, 6);
+    expect(layer.geometry.drawRange.count).toBe(3);
+    layer.setMoving(false);
+    expect(layer.geometry.drawRange.count).toBe(Infinity);
+  });
+
+  it('draws at most the points it is given a budget for, the computed ones first', () => {
+    const leftOut = { positions: new Float32Array([0.1, 0, 0, 0, 1.9, 0]), standIn: new Uint32Array([0, 2]) };
+    expect(new PointsLayer(positions, 1, leftOut, 4).drawnCount).toBe(4);
+    expect(new PointsLayer(positions, 1, leftOut, 1).drawnCount).toBe(3);
+    const four = new PointsLayer(positions, 1, leftOut, 4);
+    expect(Array.from(four.geometry.getAttribute('position').array)).toEqual([...positions, ...leftOut.positions.subarray(0, 3)]);
+    expect(four.computedPoint(3)).toBe(0);
   });
 
   it('turns see-through for the skeleton inside, and opaque again', () => {

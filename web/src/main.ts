@@ -205,7 +205,7 @@ function showCloud(reply: CloudOpenedReply, cloud: OpenCloud): void {
   const t = reply.timings;
   const notes = [...fileNotes(reply), CLOUD_NOTE];
   mesh = { cloud, fileName: reply.fileName, sample: null, surfaceError: null, openMs: t.parseMs + t.inspectMs, notes, faces: 0, decimatedFrom: null };
-  showOpened(reply, new PointsLayer(reply.positions, viewer.restPixelRatio), null, notes);
+  showOpened(reply, new PointsLayer(reply.positions, viewer.restPixelRatio, reply.leftOut, viewer.drawnPointLimit), null, notes);
   panel.setCloudFacts(reply.facts);
   offer.showCloud(reply.subsampledFrom, reply.facts.points, testHooks.memoryLimitMB ?? CORE_MEMORY.maximumMB);
 }
@@ -576,6 +576,8 @@ declare global {
       setView(view: { direction?: [number, number, number]; center?: [number, number, number]; radius?: number }): void;
       /** The worker's times of the skeleton shown, its number of sources and the threads stage 1 started on (null: none), for bench/page.ts and the tests. */
       skeletonRun(): (SkeletonReply['timings'] & { sources: number; workers: number }) | null;
+      /** A cloud's points drawn and computed on (more drawn when subsampled; null: a mesh). */
+      cloudPoints(): { drawn: number; computedOn: number } | null;
     };
   }
 }
@@ -592,6 +594,10 @@ window.cscd = {
     viewer.flush();
   },
   skeletonRun: () => (whole.result ? { ...whole.result.timings, sources: whole.result.skeleton.stats.n, workers: whole.result.pool.workers } : null),
+  cloudPoints: () => {
+    const surface = viewer.surface;
+    return surface instanceof PointsLayer ? { drawn: surface.drawnCount, computedOn: surface.vertexCount } : null;
+  },
 };
 
 // -- start: the linked view, or the default sample --------------------------------------------------

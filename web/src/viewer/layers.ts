@@ -268,12 +268,16 @@ if (regionColorMix > 0.0) diffuseColor.rgb = mix(diffuseColor.rgb, vRegionColor,
 const POINT_SIZE_PX = 3;
 
 /**
- * A point cloud: one THREE.Points draw call over the worker's float32 positions (a million points
- * stay interactive), sprites of a fixed screen size. Region colours and a scalar field (the distance
- * of stage 1, in the surface's colormap, muted like the surface when lines are drawn on it) go into a
- * per-point colour attribute, rewritten only when what it shows changes; the mesh-only looks
- * (isolines, flat shading, the sphere tint) have no counterpart on points and are no-ops, so the
- * stages drive both layers alike.
+ * A point cloud: one THREE.Points draw call over the worker's float32 positions, sprites of a fixed
+ * screen size. Region colours and a scalar field (the distance of stage 1, in the surface's colormap,
+ * muted like the surface when lines are drawn on it) go into a per-point colour attribute, rewritten
+ * only when what it shows changes; the mesh-only looks (isolines, flat shading, the sphere tint) have
+ * no counterpart on points and are no-ops, so the stages drive both layers alike.
+ *
+ * A subsampled cloud is drawn whole: the points computed on come first (vertex i is point i, as the
+ * stages index them), then those left out, each coloured and picked as the computed point that stands
+ * in for it. A software renderer draws fewer (`drawnAtMost`), and while the view moves, `setMoving`
+ * can draw the computed ones alone.
  */
 export class PointsLayer extends PositionsLayer implements Layer {
   readonly label = 'Points';
@@ -287,15 +291,66 @@ export class PointsLayer extends PositionsLayer implements Layer {
   /** What the colour attribute holds now (null: not written yet). */
   private shown: { field: ScalarField | null; regionColors: Float32Array | null; regionMix: number; dimmed: boolean } | null = null;
 
-  constructor(positions: Float32Array, pixelRatio: number) {
+  /** The points computed on: the first of those drawn. */
+  private readonly computedCount: number;
+  /** For each point left out of a subsample and drawn (after the computed ones), the point standing in for it. */
+  private readonly standIn: Uint32Array;
+
+  /** `drawnAtMost`: the points drawn, at least those computed on; of those left out, the first (they come shuffled). */
+  constructor(
+    positions: Float32Array,
+    pixelRatio: number,
+    leftOut: { positions: Float32Array; standIn: Uint32Array } = { positions: new Float32Array(0), standIn: new Uint32Array(0) },
+    drawnAtMost = Infinity,
+  ) {
     super();
-    this.geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
-    this.geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(positions.length), 3));
+    this.computedCount = positions.length / 3;
+    this.standIn = leftOut.standIn.subarray(0, Math.max(0, drawnAtMost - this.computedCount));
+    const drawn = this.standIn.length ? new Float32Array(positions.length + 3 * this.standIn.length) : positions;
+    if (drawn !== positions) {
+      drawn.set(positions);
+      drawn.set(leftOut.positions.subarray(0, 3 * this.standIn.length), positions.length);
+    }
+    this.geometry.setAttribute('position', new THREE.BufferAttribute(drawn, 3));
+    this.geometry.setAttribute('color', new THREE.BufferAttribute(new Float32Array(drawn.length), 3));
     this.geometry.computeBoundingSphere();
     const material = new THREE.PointsMaterial({ size: POINT_SIZE_PX * pixelRatio, sizeAttenuation: false, vertexColors: true });
     this.object = new THREE.Points(this.geometry, material);
     this.object.name = 'surface';
     this.setRegionColorMix(0);
+  }
+
+  /** The points computed on (those the stages' arrays are over), not those left out of a subsample. */
+  override get vertexCount(): number {
+    return this.computedCount;
+  }
+
+  /** Points drawn: those computed on and those of a subsample's left out that are drawn. */
+  get drawnCount(): number {
+    return this.geometry.getAttribute('position').count;
+  }
+
+  /** The computed point a drawn point is, or that stands in for it. */
+  computedPoint(drawn: number): number {
+    return drawn < this.computedCount ? drawn : this.standIn[drawn - this.computedCount];
+  }
+
+  /**
+   * The drawn point nearest the ray's origin among those within the raycaster's threshold of it, as the
+   * computed point it is or stands in for. Every drawn point counts, also while the view moves (a click
+   * ends a move after the page has picked).
+   */
+  intersect(raycaster: THREE.Raycaster): { point: number; at: THREE.Vector3 } | null {
+    const { count } = this.geometry.drawRange;
+    this.geometry.setDrawRange(0, Infinity);
+    const hit = raycaster.intersectObject(this.object, false)[0];
+    this.geometry.setDrawRange(0, count);
+    return hit?.index == null ? null : { point: this.computedPoint(hit.index), at: hit.point.clone() };
+  }
+
+  /** While the view moves, only the points computed on are drawn: fewer to draw on a software renderer. */
+  setMoving(moving: boolean): void {
+    this.geometry.setDrawRange(0, moving ? this.computedCount : Infinity);
   }
 
   setRegionColors(colors: Float32Array | null, mix = 1): void {
@@ -336,9 +391,10 @@ export class PointsLayer extends PositionsLayer implements Layer {
     const attribute = this.geometry.getAttribute('color') as THREE.BufferAttribute;
     const out = attribute.array as Float32Array;
     const { r, g, b } = this.base;
+    const computed = 3 * this.computedCount;
     if (field) {
       const color = new THREE.Color();
-      for (let i = 0; i < out.length / 3; i++) {
+      for (let i = 0; i < this.computedCount; i++) {
         const value = field.values[i];
         if (Number.isFinite(value)) color.setRGB(...turbo(value / field.max), THREE.SRGBColorSpace);
         else color.copy(this.base);
@@ -346,12 +402,13 @@ export class PointsLayer extends PositionsLayer implements Layer {
         color.toArray(out, 3 * i);
       }
     } else {
-      for (let i = 0; i < out.length; i += 3) {
+      for (let i = 0; i < computed; i += 3) {
         out[i] = r + (regionColors ? (regionColors[i] - r) * regionMix : 0);
         out[i + 1] = g + (regionColors ? (regionColors[i + 1] - g) * regionMix : 0);
         out[i + 2] = b + (regionColors ? (regionColors[i + 2] - b) * regionMix : 0);
       }
     }
+    this.standIn.forEach((p, j) => out.copyWithin(computed + 3 * j, 3 * p, 3 * p + 3));
     attribute.needsUpdate = true;
   }
 

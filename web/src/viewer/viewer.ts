@@ -24,6 +24,12 @@ function isSoftwareRenderer(): boolean {
   return /swiftshader|llvmpipe|software|softpipe/i.test(name);
 }
 
+/**
+ * Points of a subsampled cloud a software renderer draws (a GPU draws them all): a still frame of a
+ * million points took 1.25 s in Chromium's SwiftShader here, about 1.2 microseconds a point.
+ */
+const SOFTWARE_DRAWN_POINTS = 100_000;
+
 /** Pointer travel (px) below which a press-release counts as a click rather than an orbit drag. */
 const CLICK_SLOP_PX = 5;
 
@@ -49,7 +55,8 @@ export class Viewer {
 
   constructor(private readonly container: HTMLElement) {
     // A software renderer (no GPU) draws on the CPU cores the worker computes on, and the page waits
-    // for each frame: there, no multisampling, one pixel per CSS pixel, and half that while orbiting.
+    // for each frame: there, no multisampling, one pixel per CSS pixel, and half that while orbiting
+    // (and of a cloud drawn whole beside its subsample, the subsample alone).
     this.software = isSoftwareRenderer();
     const software = this.software;
     this.renderer = new THREE.WebGLRenderer({ antialias: !software, alpha: true, preserveDrawingBuffer: true });
@@ -69,8 +76,8 @@ export class Viewer {
     this.controls.dampingFactor = 0.12;
     this.controls.addEventListener('change', () => this.requestRender());
     if (software) {
-      this.controls.addEventListener('start', () => this.setPixelRatio(this.pixelRatio / 2));
-      this.controls.addEventListener('end', () => this.setPixelRatio(this.pixelRatio));
+      this.controls.addEventListener('start', () => this.setMoving(true));
+      this.controls.addEventListener('end', () => this.setMoving(false));
     }
 
     canvas.addEventListener('pointerdown', (e) => {
@@ -148,6 +155,11 @@ export class Viewer {
     return this.pixelRatio;
   }
 
+  /** How many of a subsampled cloud's points to draw. */
+  get drawnPointLimit(): number {
+    return this.software ? SOFTWARE_DRAWN_POINTS : Infinity;
+  }
+
   // -- camera -----------------------------------------------------------------------------------
 
   /**
@@ -174,6 +186,13 @@ export class Viewer {
     this.controls.maxDistance = whole * 20;
     this.controls.update();
     this.requestRender();
+  }
+
+  /** While orbiting on a software renderer: half the pixels, and of a subsampled cloud the points computed on alone. */
+  private setMoving(moving: boolean): void {
+    const surface = this.surface;
+    if (surface instanceof PointsLayer) surface.setMoving(moving);
+    this.setPixelRatio(moving ? this.pixelRatio / 2 : this.pixelRatio);
   }
 
   private setPixelRatio(ratio: number): void {
@@ -236,8 +255,8 @@ export class Viewer {
   /** The point nearest the camera among those within a hundredth of the cloud's radius of the ray. */
   private pickPoint(points: PointsLayer): Pick | null {
     this.raycaster.params.Points.threshold = points.boundingSphere.radius * 0.01;
-    const hit = this.raycaster.intersectObject(points.object, false)[0];
-    return hit?.index == null ? null : { face: -1, vertex: hit.index, point: hit.point.clone() };
+    const hit = points.intersect(this.raycaster);
+    return hit && { face: -1, vertex: hit.point, point: hit.at };
   }
 
   /** Window position of a vertex (for tests and overlays). */

@@ -166,7 +166,8 @@ export interface OpenedReply {
 
 /**
  * A point cloud opened (checked, subsampled when above POINT_LIMIT, opened in the core with its
- * neighbours): the page draws its points; only the whole-shape stages compute on it.
+ * neighbours): the page draws its points, those left out of a subsample too; only the whole-shape
+ * stages compute on it.
  */
 export interface CloudOpenedReply {
   type: 'opened';
@@ -174,8 +175,14 @@ export interface CloudOpenedReply {
   id: number;
   fileName: string;
   format: ShapeFormat;
-  /** xyz per point (float32 for the GPU); empty when the request had `withArrays: false`. */
+  /** xyz per point computed on (float32 for the GPU); empty when the request had `withArrays: false`. */
   positions: Float32Array;
+  /**
+   * The points a subsample left out, drawn but not computed on (xyz), and for each the point of
+   * `positions` that stands for it (within the subsample's radius): its colours and its picks. Empty
+   * when not subsampled or without arrays.
+   */
+  leftOut: { positions: Float32Array; standIn: Uint32Array };
   facts: CloudFacts;
   warnings: string[];
   /** What the checks on load did (lib/io/cloud-check.ts) and a subsampling, one sentence each. */

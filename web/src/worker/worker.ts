@@ -26,7 +26,7 @@ import {
   type Skeleton,
   type Surface,
 } from '../../../lib/core/types.ts';
-import { subsampleCloud } from '../../../lib/cloud/subsample.ts';
+import { subsample } from '../../../lib/cloud/subsample.ts';
 import { checkCloud } from '../../../lib/io/cloud-check.ts';
 import { parseShape, type ParsedCloud } from '../../../lib/io/index.ts';
 import { repairMesh } from '../../../lib/io/repair.ts';
@@ -205,16 +205,16 @@ async function open(request: OpenRequest): Promise<void> {
  * A point cloud: checked as the CLI checks it (a bad cloud is refused with its message), subsampled
  * above POINT_LIMIT unless `allPoints` (to SUBSAMPLE_TARGET points, said among the repairs: the page
  * computes on the subsample, as the CLI advises, and offers all the points), then opened in the core
- * with `neighbours`.
+ * with `neighbours`. The page gets the points left out too: it draws them all.
  */
 async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: number): Promise<void> {
   const { id, fileName, neighbours } = request;
   const { cloud: checked, repairs } = checkCloud(parsed, neighbours);
   const points = checked.positions.length / 3;
-  const subsample = points > POINT_LIMIT && !request.allPoints;
-  if (subsample) progress(id, 'parse', `subsampling ${points} points to ${SUBSAMPLE_TARGET}…`); // seconds at a million
-  const cloud = subsample ? subsampleCloud(checked, SUBSAMPLE_TARGET, defaultOptions.seed) : checked;
-  if (subsample) {
+  const subsampled = points > POINT_LIMIT && !request.allPoints;
+  if (subsampled) progress(id, 'parse', `subsampling ${points} points to ${SUBSAMPLE_TARGET}…`); // seconds at a million
+  const { cloud, leftOut, standIn } = subsample(checked, subsampled ? SUBSAMPLE_TARGET : points, defaultOptions.seed);
+  if (subsampled) {
     repairs.push(`subsampled from ${points} to ${cloud.positions.length / 3} points (Poisson-disk, seed ${defaultOptions.seed}): above ${POINT_LIMIT} points the skeleton takes too long`);
   }
   const parseMs = performance.now() - started;
@@ -225,6 +225,10 @@ async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: num
   currentCloud = { cloud: core.openCloud(cloud, { neighbours }), arrays: cloud, neighbours, lastSource: null, lastSkeleton: null };
   const inspectMs = performance.now() - t;
   const positions = request.withArrays ? new Float32Array(cloud.positions) : new Float32Array(0);
+  const drawnLeftOut = request.withArrays ? leftOut : new Int32Array(0);
+  const leftOutPositions = new Float32Array(3 * drawnLeftOut.length);
+  drawnLeftOut.forEach((i, j) => leftOutPositions.set(checked.positions.subarray(3 * i, 3 * i + 3), 3 * j));
+  const leftOutStandIn = request.withArrays ? Uint32Array.from(standIn) : new Uint32Array(0);
   post(
     {
       type: 'opened',
@@ -236,10 +240,11 @@ async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: num
       facts: currentCloud.cloud.facts,
       warnings: parsed.warnings,
       repairs,
-      subsampledFrom: subsample ? points : null,
+      leftOut: { positions: leftOutPositions, standIn: leftOutStandIn },
+      subsampledFrom: subsampled ? points : null,
       timings: { parseMs, inspectMs },
     },
-    transferables(positions),
+    transferables(positions, leftOutPositions, leftOutStandIn),
   );
 }
 

@@ -1,9 +1,11 @@
 /** What every CLI command shares: its description for help and parsing, errors, mesh and point-cloud input. */
 import { readFile } from 'node:fs/promises';
 import { loadCoreNode } from '../lib/core/node.ts';
+import { AS_CLOUD, meshAsCloud } from '../lib/cloud/from-mesh.ts';
 import type { Cloud, CloudArrays, CloudOptions, Core, MeshArrays, RefinedSurface } from '../lib/core/types.ts';
 import { checkCloud } from '../lib/io/cloud-check.ts';
 import { parseMesh, parseShape, type ParsedCloud, type ParsedMesh } from '../lib/io/index.ts';
+import type { ShapeFormat } from '../lib/io/types.ts';
 import { repairMesh } from '../lib/io/repair.ts';
 import { decimate } from '../lib/mesh/decimate.ts';
 import { cloudSizeWarning, DECIMATE_TARGET, FACE_LIMIT, sizeWarning } from '../lib/mesh/limits.ts';
@@ -85,18 +87,30 @@ export interface InputMesh extends ParsedMesh {
   vertexMap: Int32Array;
 }
 
-/** A point-cloud file as every command works on it: parsed, then checked (lib/io/cloud-check.ts). */
-export interface InputCloud extends ParsedCloud {
-  /** What the checks did, one sentence each; empty when the cloud is as in the file. */
+/**
+ * A point-cloud file as every command works on it: parsed, then checked (lib/io/cloud-check.ts); or a
+ * mesh file run as a cloud of its vertices (--as-cloud), repaired first, its format the mesh file's.
+ */
+export interface InputCloud extends Omit<ParsedCloud, 'format'> {
+  format: ShapeFormat;
+  /** What the checks (and a mesh's repairs) did, one sentence each; empty when the cloud is as in the file. */
   repairs: string[];
-  /** Index of every point of the file in the checked cloud, -1 for removed ones. */
+  /** Index of every point (or vertex) of the file in the checked cloud, -1 for removed ones. */
   pointMap: Int32Array;
 }
 
 interface ReadSettings {
   /** Parser warnings and repairs go to stderr unless the command reports them itself. */
   printWarnings?: boolean;
+  /** A mesh file is run as a point cloud of its vertices (--as-cloud). */
+  asCloud?: boolean;
 }
+
+/** --as-cloud, for every command that reads a mesh or a cloud (the page's `asCloud` box). */
+export const asCloudOption: OptionSpec = { type: 'boolean', description: AS_CLOUD.help };
+
+/** The read settings of a command line: --as-cloud given or not. */
+export const asCloudFlag = (values: OptionValues): boolean => values[AS_CLOUD.flag] === true;
 
 function reportInput(file: string, warnings: string[], repairs: string[], io: CliIo, { printWarnings = true }: ReadSettings): void {
   if (!printWarnings) return;
@@ -121,10 +135,23 @@ export async function readMesh(file: string, io: CliIo, settings: ReadSettings =
  */
 export async function readShape(file: string, io: CliIo, neighbours: number, settings: ReadSettings = {}): Promise<InputMesh | InputCloud> {
   const parsed = parseShape(await readBytes(file), file);
-  if (parsed.kind === 'mesh') return inputMesh(parsed, file, io, settings);
+  if (parsed.kind === 'mesh' && !settings.asCloud) return inputMesh(parsed, file, io, settings);
+  if (parsed.kind === 'mesh') return meshCloud(parsed, file, io, neighbours, settings);
+  if (settings.asCloud) throw new UsageError(`--${AS_CLOUD.flag} does not apply to ${file}: it is a point cloud already`);
   const { cloud, repairs, pointMap } = checkCloud(parsed, neighbours);
   reportInput(file, parsed.warnings, repairs, io, settings);
   return { ...cloud, repairs, pointMap };
+}
+
+/** A mesh file's vertices as a cloud (--as-cloud): repaired as a mesh, then checked as a cloud; the file's vertex indices map to its points. */
+function meshCloud(parsed: ParsedMesh, file: string, io: CliIo, neighbours: number, settings: ReadSettings): InputCloud {
+  const mesh = inputMesh(parsed, file, io, { printWarnings: false });
+  const { cloud: vertices, pointOfVertex, note } = meshAsCloud(mesh);
+  const { cloud, repairs, pointMap: checkedPoint } = checkCloud(vertices, neighbours);
+  const warnings = [...parsed.warnings, note], allRepairs = [...mesh.repairs, ...repairs];
+  reportInput(file, warnings, allRepairs, io, settings);
+  const pointMap = mesh.vertexMap.map((v) => (v < 0 || pointOfVertex[v] < 0 ? -1 : checkedPoint[pointOfVertex[v]]));
+  return { kind: 'cloud', format: parsed.format, ...cloud, warnings, repairs: allRepairs, pointMap };
 }
 
 /** Refuses flags that do nothing for this kind of shape (--decimate on a cloud, --neighbours on a mesh). */

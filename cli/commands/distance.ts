@@ -1,6 +1,7 @@
 import { writeFile } from 'node:fs/promises';
 import type { CloudOptions } from '../../lib/core/types.ts';
-import { UsageError, openCloud, openSolver, readShape, refuseFlags, type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues } from '../command.ts';
+import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
+import { UsageError, asCloudFlag, asCloudOption, openCloud, openSolver, readShape, refuseFlags, type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues } from '../command.ts';
 import { cloudFlagSpecs, cloudOptionsFromFlags } from './separator.ts';
 
 export const distance: Command = {
@@ -10,6 +11,7 @@ export const distance: Command = {
   options: {
     source: { type: 'string', value: 'V', required: true, description: 'source vertex index (0-based; in a point cloud, point index)' },
     ...cloudFlagSpecs(),
+    [AS_CLOUD.flag]: asCloudOption,
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
   details: [
@@ -21,7 +23,7 @@ export const distance: Command = {
   ].join('\n'),
   async run([file], options, io) {
     const cloudOptions = cloudOptionsFromFlags(options);
-    const shape = await readShape(file, io, cloudOptions.neighbours);
+    const shape = await readShape(file, io, cloudOptions.neighbours, { asCloud: asCloudFlag(options) });
     // Indices are those of the file, in and out, even when the repair or the checks renumbered them.
     const json = shape.kind === 'cloud'
       ? await cloudDistance(shape, parseSource(String(options.source), shape.pointMap, 'point'), file, io, cloudOptions)
@@ -45,7 +47,7 @@ async function meshDistance(mesh: InputMesh, source: number, file: string, io: C
 
 async function cloudDistance(cloudFile: InputCloud, source: number, file: string, io: CliIo, options: CloudOptions): Promise<string> {
   const { pointMap } = cloudFile;
-  if (pointMap[source] < 0) throw new UsageError(`--source ${source} is a point with a non-finite coordinate, which the checks removed`);
+  if (pointMap[source] < 0) throw new UsageError(`--source ${source} is a point the checks removed (a non-finite coordinate, or with --${AS_CLOUD.flag} a vertex used by no face)`);
   const cloud = await openCloud(cloudFile, options, file, io);
   try {
     // Infinity (another component) is written as null by JSON.stringify.

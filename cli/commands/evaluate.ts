@@ -1,5 +1,6 @@
 import { parseSkeleton } from '../../lib/io/skeleton.ts';
-import { getCore, readBytes, readShape, type Command } from '../command.ts';
+import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
+import { asCloudFlag, asCloudOption, getCore, readBytes, readShape, type Command } from '../command.ts';
 import { cloudOptionsFromFlags } from './separator.ts';
 
 export const evaluate: Command = {
@@ -8,6 +9,7 @@ export const evaluate: Command = {
   args: ['<mesh|cloud>', '<skeleton>'],
   options: {
     'derive-radii': { type: 'boolean', description: "ignore the skeleton file's radii and derive them from the mesh" },
+    [AS_CLOUD.flag]: asCloudOption,
   },
   details: [
     'Prints {"reconError", "median", "p95", "nodes", "cycles", "radiiSource"}: the squared distance from each',
@@ -17,7 +19,7 @@ export const evaluate: Command = {
     "Against a point cloud, the same error at the cloud's points (after its checks), radii derived around them.",
   ].join('\n'),
   async run([meshFile, skeletonFile], options, io) {
-    const shape = await readShape(meshFile, io, cloudOptionsFromFlags({}).neighbours);
+    const shape = await readShape(meshFile, io, cloudOptionsFromFlags({}).neighbours, { asCloud: asCloudFlag(options) });
     const skeleton = parseSkeleton(await readBytes(skeletonFile), skeletonFile);
     const input = { nodes: skeleton.nodes, edges: skeleton.edges, radii: options['derive-radii'] ? null : skeleton.radii };
     const core = await getCore();

@@ -1,13 +1,14 @@
 import type { CloudOptions } from '../../lib/core/types.ts';
 import { refinementOf } from '../../lib/mesh/refine.ts';
-import { decimateIfAsked, decimateOption, getCore, openCloud, readShape, refuseFlags, type CliIo, type Command, type InputCloud } from '../command.ts';
+import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
+import { asCloudFlag, asCloudOption, decimateIfAsked, decimateOption, getCore, openCloud, readShape, refuseFlags, type CliIo, type Command, type InputCloud } from '../command.ts';
 import { cloudFlagSpecs, cloudOptionsFromFlags } from './separator.ts';
 
 export const info: Command = {
   name: 'info',
   summary: 'print facts about a mesh (counts, topology, bounding box) or a point cloud as JSON',
   args: ['<mesh|cloud>'],
-  options: { decimate: decimateOption, ...cloudFlagSpecs() },
+  options: { decimate: decimateOption, ...cloudFlagSpecs(), [AS_CLOUD.flag]: asCloudOption },
   details: [
     'Prints {file, format, vertices, faces, edges, components, boundaryLoops, genus, ..., warnings, repairs}: the facts of',
     'the mesh after the repairs listed in `repairs` (see README, Accepted input and repairs), and after',
@@ -18,7 +19,7 @@ export const info: Command = {
   ].join('\n'),
   async run([file], values, io) {
     const options = cloudOptionsFromFlags(values);
-    const shape = await readShape(file, io, options.neighbours, { printWarnings: false });
+    const shape = await readShape(file, io, options.neighbours, { printWarnings: false, asCloud: asCloudFlag(values) });
     if (shape.kind === 'cloud') {
       refuseFlags(values, ['decimate'], file, 'point cloud');
       return printReport(io, await cloudReport(file, shape, options, io));

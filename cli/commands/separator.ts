@@ -17,8 +17,9 @@ import {
 } from '../../lib/core/options.ts';
 import { random } from '../../lib/core/random.ts';
 import type { CloudOptions, CloudSeparatorStages, MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
+import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
 import {
-  UsageError, openCloud, openSolver, readShape, refuseFlags,
+  UsageError, asCloudFlag, asCloudOption, openCloud, openSolver, readShape, refuseFlags,
   type CliIo, type Command, type InputCloud, type InputMesh, type OptionSpec as CliOptionSpec, type OptionValues,
 } from '../command.ts';
 
@@ -213,6 +214,7 @@ export const separator: Command = {
     source: { type: 'string', value: 'V', description: 'source vertex (or point) index (0-based; default: one drawn with the seed)' },
     ...optionFlagSpecs({ pipeline: false }),
     ...cloudFlagSpecs(),
+    [AS_CLOUD.flag]: asCloudOption,
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
   details: [
@@ -223,7 +225,7 @@ export const separator: Command = {
   ].join('\n'),
   async run([file], values, io) {
     const cloudOptions = cloudOptionsFromFlags(values);
-    const shape = await readShape(file, io, cloudOptions.neighbours);
+    const shape = await readShape(file, io, cloudOptions.neighbours, { asCloud: asCloudFlag(values) });
     const json = shape.kind === 'cloud'
       ? await cloudSeparator(shape, cloudOptions, values, file, io)
       : await meshSeparator(shape, values, file, io);

@@ -7,8 +7,9 @@ import { runStage1 } from '../../lib/core/pool.ts';
 import { CLOUD_VERTICES_PER_POINT, poolSize } from '../../lib/core/pool-size.ts';
 import type { CloudOptions, Options, Pipeline, PipelineProgress, ShapeOptions, Skeleton } from '../../lib/core/types.ts';
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
+import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
 import {
-  UsageError, decimateIfAsked, decimateOption, getCore, openCloud, openSolver, readShape, refuseFlags,
+  UsageError, asCloudFlag, asCloudOption, decimateIfAsked, decimateOption, getCore, openCloud, openSolver, readShape, refuseFlags,
   type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues, type Output,
 } from '../command.ts';
 import { cloudFlagSpecs, cloudOptionsFromFlags, optionFlagSpecs, optionsFromFlags, settingFlagSpecs, settingsFromFlags } from './separator.ts';
@@ -71,6 +72,7 @@ export const skeleton: Command = {
   options: {
     ...optionFlagSpecs(),
     ...cloudFlagSpecs(),
+    [AS_CLOUD.flag]: asCloudOption,
     decimate: decimateOption,
     format: { type: 'string', value: SKELETON_FORMATS.join('|'), description: 'output format (default: from the --out extension, else json)' },
     out: { type: 'string', value: 'FILE', description: 'write the skeleton to FILE instead of stdout' },
@@ -88,7 +90,7 @@ export const skeleton: Command = {
     const cloudOptions = cloudOptionsFromFlags(values);
     const settings = settingsFromFlags(values);
     const format = outputFormat(values);
-    const shape = await readShape(file, io, cloudOptions.neighbours);
+    const shape = await readShape(file, io, cloudOptions.neighbours, { asCloud: asCloudFlag(values) });
     const progress = new ProgressLine(io.stderr);
     const started = performance.now();
     let result: Skeleton;

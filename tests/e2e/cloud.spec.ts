@@ -186,6 +186,42 @@ test('a cloud whose points all would not fit in a core is not offered whole, and
   expect((await canvasStats(page)).hueBins, 'every point drawn coloured by the distance').toBeGreaterThanOrEqual(5);
 });
 
+test('a mesh runs as a point cloud of its vertices, and as the mesh again', async ({ page }) => {
+  // Bob (genus 1) as the cloud of its 5344 vertices, n = 24 (1 cycle from the CLI: tests/unit/mesh-as-cloud.test.ts runs spot).
+  await openPage(page, '/#mesh=bob&n=24', '5344');
+  await expect(page.getByTestId('as-cloud-row')).toBeVisible();
+  await expect(page.getByTestId('as-cloud')).not.toBeChecked();
+  await page.getByTestId('as-cloud').check();
+  await expect(page.getByTestId('facts-vertices')).toHaveText('5344 points', { timeout: 30_000 });
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('facts-faces')).toHaveText('–');
+  await expect(page.getByTestId('warnings')).toContainText('the mesh runs as a point cloud: its 5344 vertices, with their faces’ normals');
+  await expect(page.getByTestId('opt-neighbours')).toBeVisible();
+  await expect(page.getByTestId('as-cloud')).toBeChecked();
+  await expect(page, 'a link keeps the choice').toHaveURL(/asCloud=1/);
+  await enterStage(page, 'separators');
+  await expect(body(page)).toHaveAttribute('data-sk-run', 'done', { timeout: 60_000 });
+  await waitForState(page, 'ready');
+  expect(await figure(page, 'sk-cycles'), 'bob\'s handle, from its vertices').toBe(1);
+
+  await page.getByTestId('as-cloud').uncheck();
+  await expect(page.getByTestId('facts-vertices')).toHaveText('5344', { timeout: 30_000 });
+  await waitForState(page, 'ready');
+  await expect(page.getByTestId('facts-faces')).toHaveText('10688');
+  await expect(page.getByTestId('opt-neighbours')).toBeHidden();
+  await expect(page.getByTestId('as-cloud-row')).toBeVisible();
+  await expect(page).not.toHaveURL(/asCloud/);
+
+  // The link of a sample run as a cloud opens it so.
+  await openPage(page, '/#mesh=spot&asCloud=1', '2930 points');
+  await expect(page.getByTestId('as-cloud')).toBeChecked();
+
+  // A cloud file has no mesh to go back to.
+  await page.getByTestId('file-input').setInputFiles({ name: 'bob_subsample.ply', mimeType: 'application/octet-stream', buffer: readFileSync(fixture('clouds', 'bob_subsample.ply')) });
+  await expect(page.getByTestId('facts-vertices')).toHaveText('1948 points', { timeout: 30_000 });
+  await expect(page.getByTestId('as-cloud-row')).toBeHidden();
+});
+
 test('a run on a cloud streams its candidate loops and can be cancelled', async ({ page }) => {
   await openPage(page, '/#n=2000');
   await page.getByTestId('file-input').setInputFiles({ name: 'bob_subsample.ply', mimeType: 'application/octet-stream', buffer: readFileSync(fixture('clouds', 'bob_subsample.ply')) });

@@ -7,10 +7,11 @@ import { readUrl } from '../../web/src/ui/url-state.ts';
 describe('readUrl', () => {
   it('reads the sample, stage, source, every option and the run settings', () => {
     const state = readUrl(
-      '#mesh=bob&stage=skeleton&source=812&target=geodesic&sphere=false&seed=7&angleThreshold=1.5&laplacianThreshold=0.4&pruneDepth=5&n=40&pruneLengthFactor=2.5&drawAhead=4&stage1Vertices=30000&workers=3',
+      '#mesh=bob&asCloud=1&stage=skeleton&source=812&target=geodesic&sphere=false&seed=7&angleThreshold=1.5&laplacianThreshold=0.4&pruneDepth=5&n=40&pruneLengthFactor=2.5&drawAhead=4&stage1Vertices=30000&workers=3',
     );
     expect(state).toEqual({
       mesh: 'bob',
+      asCloud: true,
       stage: 'skeleton',
       source: 812,
       options: { target: 'geodesic', sphere: false, seed: 7, angleThreshold: 1.5, laplacianThreshold: 0.4, pruneDepth: 5, n: 40, pruneLengthFactor: 2.5, drawAhead: 4, stage1Vertices: 30000 },
@@ -21,14 +22,15 @@ describe('readUrl', () => {
   });
 
   it('gives the defaults for an empty hash', () => {
-    expect(readUrl('')).toEqual({ mesh: null, stage: null, source: null, options: defaultOptions, settings: defaultRunSettings });
+    expect(readUrl('')).toEqual({ mesh: null, asCloud: false, stage: null, source: null, options: defaultOptions, settings: defaultRunSettings });
   });
 
   it('ignores values out of range, of the wrong kind or unknown', () => {
     const state = readUrl(
       '#mesh=../etc&stage=nowhere&source=-3&target=far&sphere=yes&seed=1.5&angleThreshold=4&laplacianThreshold=-1&pruneDepth=2.5&n=0&pruneLengthFactor=abc&workers=0',
     );
-    expect(state).toEqual({ mesh: null, stage: null, source: null, options: defaultOptions, settings: defaultRunSettings });
+    expect(state).toEqual({ mesh: null, asCloud: false, stage: null, source: null, options: defaultOptions, settings: defaultRunSettings });
+    expect(readUrl('#asCloud=yes').asCloud).toBe(false);
     expect(readUrl('#workers=257').settings).toEqual(defaultRunSettings);
   });
 });

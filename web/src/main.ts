@@ -8,6 +8,7 @@
  * and `dataset.separatorRuns` counts the stage-1 replies shown, for tests.
  */
 import './style.css';
+import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
 import { SHAPE_EXTENSIONS } from '../../lib/io/index.ts';
 import { SingleSource } from './single-source.ts';
 import { STAGES, SOURCE_STAGES, stageDef, stageIndex, type StageKey } from './stage-defs.ts';
@@ -29,12 +30,14 @@ import { WholeShape } from './whole-shape.ts';
 import { GeometryClient, WorkerError } from './worker/client.ts';
 import { CORE_MEMORY } from '../../lib/core/pool-size.ts';
 import type { Refinement } from '../../lib/core/types.ts';
-import type { CloudOpenedReply, DecimatedReply, OpenedReply, SkeletonReply, WriteRequest } from './worker/protocol.ts';
+import type { CloudOpenedReply, DecimatedReply, OpenChoice, OpenedReply, SkeletonReply, WriteRequest } from './worker/protocol.ts';
 
 const initial = readUrl();
 const panel = new Panel(() => progressTextMs(viewer.software));
 const offer = new LimitOffer();
 const statusCancel = byTestId<HTMLButtonElement>('status-cancel');
+/** Runs the open mesh as a point cloud of its vertices, or as the mesh again. */
+const asCloudBox = byTestId<HTMLInputElement>('as-cloud');
 const viewer = new Viewer(document.querySelector<HTMLElement>('#viewport')!);
 const timeline = new Timeline(document.querySelector<HTMLElement>('#timeline')!);
 const params = new ParamsPanel(document.querySelector<HTMLElement>('#params')!, initial.options, initial.settings);
@@ -51,16 +54,19 @@ const layerColors = new Map<string, string>();
 let opening = 0;
 let computing = 0;
 let failed = false;
-/** How an open cloud was opened (on all its points, or on a subsample above the limit) and how to open it again. */
-type OpenCloud = { reopen: (allPoints: boolean) => Promise<boolean>; allPoints: boolean };
+/** The choices a file is opened with besides the panel's `neighbours`: a cloud on all its points, a mesh as a cloud. */
+type FileChoice = Omit<OpenChoice, 'neighbours'>;
+const AS_GIVEN: FileChoice = Object.freeze({ allPoints: false, asCloud: false });
+/** How the open file was opened, and how to open it again with other choices (or other neighbours). */
+type OpenedFile = { choice: FileChoice; reopen: (choice: FileChoice) => Promise<boolean> };
 /**
- * The open mesh or point cloud: its file name, the sample it is (null: a file of the user's), why it
- * cannot be computed on, its notes (parser warnings, repairs), its faces and the count it was
- * decimated from (or null); for a cloud, how to open it again (with other neighbours, or on all its
- * points) and whether it was opened on all its points.
+ * The open mesh or point cloud: whether it is a cloud (a cloud file, or a mesh run as one), how its
+ * file was opened, its file name, the sample it is (null: a file of the user's), why it cannot be
+ * computed on, its notes (parser warnings, repairs), its faces and the count it was decimated from (or null).
  */
 let mesh: {
-  cloud: OpenCloud | null;
+  cloud: boolean;
+  file: OpenedFile;
   fileName: string;
   sample: string | null;
   surfaceError: string | null;
@@ -76,6 +82,7 @@ function updateState(): void {
   document.body.dataset.state = state;
   statusCancel.hidden = computing === 0;
   statusCancel.disabled = false;
+  asCloudBox.disabled = opening > 0;
   if (state === 'ready' || state === 'error') {
     const decimated = mesh?.decimatedFrom ? ` · decimated from ${mesh.decimatedFrom} to ${mesh.faces} faces` : '';
     panel.setStatus(viewer.surface ? `Ready${decimated}` : 'No mesh open');
@@ -156,8 +163,8 @@ async function openBytes(
   fileName: string,
   bytes: ArrayBuffer,
   sample: string | null,
-  reopen: (allPoints: boolean) => Promise<boolean>,
-  allPoints = false,
+  reopen: (choice: FileChoice) => Promise<boolean>,
+  choice: FileChoice,
 ): Promise<boolean> {
   if (whole.running) whole.invalidate(); // it would hold up the open; a finished result stays if the file is refused
   opening++;
@@ -166,9 +173,9 @@ async function openBytes(
   panel.setStatus(`opening ${fileName}…`, true);
   updateState();
   try {
-    const reply = await client.open(fileName, bytes, params.neighbours, allPoints);
-    if (reply.shape === 'cloud') showCloud(reply, { reopen, allPoints });
-    else showMesh(reply, sample);
+    const reply = await client.open(fileName, bytes, { neighbours: params.neighbours, ...choice });
+    if (reply.shape === 'cloud') showCloud(reply, sample, { choice, reopen });
+    else showMesh(reply, sample, { choice, reopen });
     return true;
   } catch (error) {
     // A crash is reported by onCrash; the previous mesh stays either way.
@@ -184,7 +191,7 @@ async function openBytes(
 /** The parser's warnings and the repairs (or a cloud's checks) on load, for the notes. */
 const fileNotes = (reply: OpenedReply | CloudOpenedReply) => [...reply.warnings, ...reply.repairs.map((repair) => `Repaired: ${repair}`)];
 
-function showMesh(reply: OpenedReply, sample: string | null): void {
+function showMesh(reply: OpenedReply, sample: string | null, file: OpenedFile): void {
   const t = reply.timings;
   const notes = fileNotes(reply);
   const { degenerateFaces, unreferencedVertices, faces } = reply.facts;
@@ -192,7 +199,7 @@ function showMesh(reply: OpenedReply, sample: string | null): void {
   if (unreferencedVertices) notes.push(`${unreferencedVertices} ${unreferencedVertices > 1 ? 'vertices' : 'vertex'} used by no face`);
   if (reply.surfaceError) notes.push(`Geodesic distance is unavailable: ${reply.surfaceError}`);
   if (reply.refined) notes.push(refinedNote(reply.refined));
-  mesh = { cloud: null, fileName: reply.fileName, sample, surfaceError: reply.surfaceError, openMs: t.parseMs + t.inspectMs, notes, faces, decimatedFrom: null };
+  mesh = { cloud: false, file, fileName: reply.fileName, sample, surfaceError: reply.surfaceError, openMs: t.parseMs + t.inspectMs, notes, faces, decimatedFrom: null };
   showOpened(reply, new SurfaceLayer(reply.positions, reply.triangles), sample, notes);
   panel.setFacts(reply.facts);
   offer.show(faces, reply.facts.vertices);
@@ -201,11 +208,12 @@ function showMesh(reply: OpenedReply, sample: string | null): void {
 /** What a cloud is not computed on yet, in its notes. */
 const CLOUD_NOTE = 'Point cloud: every stage runs on it (CSCD-PC); the reconstruction error is measured against its points';
 
-function showCloud(reply: CloudOpenedReply, cloud: OpenCloud): void {
+/** A cloud file, or a mesh file run as a cloud (`sample`: the sample mesh it is, or null). */
+function showCloud(reply: CloudOpenedReply, sample: string | null, file: OpenedFile): void {
   const t = reply.timings;
   const notes = [...fileNotes(reply), CLOUD_NOTE];
-  mesh = { cloud, fileName: reply.fileName, sample: null, surfaceError: null, openMs: t.parseMs + t.inspectMs, notes, faces: 0, decimatedFrom: null };
-  showOpened(reply, new PointsLayer(reply.positions, viewer.restPixelRatio, reply.leftOut, viewer.drawnPointLimit), null, notes);
+  mesh = { cloud: true, file, fileName: reply.fileName, sample, surfaceError: null, openMs: t.parseMs + t.inspectMs, notes, faces: 0, decimatedFrom: null };
+  showOpened(reply, new PointsLayer(reply.positions, viewer.restPixelRatio, reply.leftOut, viewer.drawnPointLimit), sample, notes);
   panel.setCloudFacts(reply.facts);
   offer.showCloud(reply.subsampledFrom, reply.facts.points, testHooks.memoryLimitMB ?? CORE_MEMORY.maximumMB);
 }
@@ -217,6 +225,9 @@ function showOpened(reply: OpenedReply | CloudOpenedReply, layer: ShapeLayer, sa
   params.showCloudOptions(cloud);
   // Flat shading and isolines draw a mesh's faces.
   for (const box of [flatBox, isolinesBox]) box.closest('label')!.hidden = cloud;
+  // A mesh can run as a cloud of its vertices, and back; a cloud file has no mesh to go back to.
+  asCloudBox.closest('label')!.hidden = cloud && !reply.asCloud;
+  asCloudBox.checked = cloud;
   const random = byTestId('random-source');
   random.textContent = cloud ? 'Random point' : 'Random vertex';
   random.title = `Run stage 1 from a ${cloud ? 'point' : 'vertex'} drawn at random`;
@@ -261,20 +272,29 @@ function showShape(layer: ShapeLayer): void {
   viewer.surface!.setIsolines(isolinesBox.checked);
 }
 
+// -- a mesh run as a point cloud ---------------------------------------------------------------------
+
+asCloudBox.closest('label')!.title = `${AS_CLOUD.help.charAt(0).toUpperCase()}${AS_CLOUD.help.slice(1)}, to compare CSCD-M and CSCD-PC on one shape. Opens the file again.`;
+asCloudBox.addEventListener('change', () => {
+  if (!mesh) return;
+  // If the file cannot be opened so, what is open stays, and so does the box.
+  void mesh.file.reopen({ allPoints: false, asCloud: asCloudBox.checked }).then((opened) => opened || (asCloudBox.checked = !!mesh?.cloud));
+});
+
 // -- shapes above the size limit: decimate a mesh or compute on it whole; a cloud's points all --------
 
 offer.onDecimate = (targetFaces) => void decimateMesh(targetFaces);
 offer.onFull = () => {
-  if (mesh?.cloud) return void openAllPoints(mesh.cloud);
+  if (mesh?.cloud) return void openAllPoints(mesh.file);
   offer.hide();
   refresh();
 };
 
 /** The cloud opened again on all its points; the offer stays if that fails (the subsample stays open). */
-async function openAllPoints(cloud: OpenCloud): Promise<void> {
+async function openAllPoints(file: OpenedFile): Promise<void> {
   offer.setBusy(true);
   try {
-    await cloud.reopen(true);
+    await file.reopen({ ...file.choice, allPoints: true });
   } finally {
     offer.setBusy(false);
   }
@@ -302,7 +322,7 @@ statusCancel.addEventListener('click', () => {
   client.cancelRunning();
 });
 
-async function openFile(file: File, allPoints = false): Promise<void> {
+async function openFile(file: File, choice = AS_GIVEN): Promise<void> {
   let bytes: ArrayBuffer;
   try {
     bytes = await file.arrayBuffer();
@@ -311,14 +331,14 @@ async function openFile(file: File, allPoints = false): Promise<void> {
     updateState();
     return;
   }
-  await openBytes(file.name, bytes, null, (all) => openFile(file, all).then(() => true), allPoints);
+  await openBytes(file.name, bytes, null, (other) => openFile(file, other).then(() => true), choice);
 }
 
-async function openSample(sample: Sample, allPoints = false): Promise<boolean> {
+async function openSample(sample: Sample, choice = AS_GIVEN): Promise<boolean> {
   try {
     const response = await fetch(`samples/${sample.file}`);
     if (!response.ok) throw new Error(`HTTP ${response.status} for samples/${sample.file}`);
-    return await openBytes(sample.file, await response.arrayBuffer(), sample.name, (all) => openSample(sample, all), allPoints);
+    return await openBytes(sample.file, await response.arrayBuffer(), sample.name, (other) => openSample(sample, other), choice);
   } catch (error) {
     fail(`Could not load the sample mesh ${sample.file}`, error);
     updateState();
@@ -425,7 +445,7 @@ function refresh(): void {
   updateDownloads();
   // A file of the user's cannot be linked to: its source vertex would mean nothing on the default sample.
   const sample = mesh?.sample ?? null;
-  writeUrl({ mesh: sample, stage: key, source: sample ? single.source : null, options: params.options, settings: params.settings });
+  writeUrl({ mesh: sample, asCloud: !!mesh?.cloud, stage: key, source: sample ? single.source : null, options: params.options, settings: params.settings });
   // Drawn now, not at the next animation frame: a stage change leaves the state 'ready', so whoever
   // reads the picture once the page shows the new stage must get the new stage's pixels.
   viewer.requestRender();
@@ -506,7 +526,7 @@ params.onChange = (keys) => {
   refresh();
 };
 // The cloud's neighbourhoods are made when it is opened: a change opens it again, every result dropped.
-params.onNeighboursChange = () => void mesh?.cloud?.reopen(mesh.cloud.allPoints);
+params.onNeighboursChange = () => void (mesh?.cloud && mesh.file.reopen(mesh.file.choice));
 // A run setting changes how the next run is computed, not its result: the skeleton shown stays.
 params.onSettingsChange = () => refresh();
 
@@ -609,7 +629,7 @@ window.addEventListener('hashchange', () => location.reload());
 void (async () => {
   refresh();
   const sample = sampleByName(initial.mesh) ?? DEFAULT_SAMPLE;
-  if (!(await openSample(sample))) return;
+  if (!(await openSample(sample, { ...AS_GIVEN, asCloud: initial.asCloud }))) return;
   const surface = viewer.surface;
   if (initial.source !== null && surface && initial.source < surface.vertexCount && canCompute()) {
     wanted = initial.stage && SOURCE_STAGES.includes(initial.stage) ? initial.stage : 'geodesics';

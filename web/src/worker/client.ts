@@ -17,6 +17,7 @@ import type { Options, Refinement } from '../../../lib/core/types.ts';
 import {
   type DecimatedReply,
   type ErrorKind,
+  type OpenChoice,
   type PipelineNews,
   type ProgressEvent,
   type ReplyFor,
@@ -71,7 +72,7 @@ interface Pending {
  * coarse), or the arrays of the decimated mesh as the worker computed on them.
  */
 type KeptMesh =
-  | { fileName: string; bytes: ArrayBuffer; neighbours: number; allPoints: boolean }
+  | { fileName: string; bytes: ArrayBuffer; choice: OpenChoice }
   | { fileName: string; positions: Float64Array; triangles: Uint32Array; refined: Refinement | null };
 
 const UNCANCELLABLE = new Set<WorkerRequest['type']>(['open', 'restore', 'write']);
@@ -112,12 +113,13 @@ export class GeometryClient {
 
   /**
    * Opens a mesh or point-cloud file in the worker (a cloud with `neighbours` per point, and above
-   * POINT_LIMIT on a subsample unless `allPoints`). `bytes` is transferred (detached) after a copy is kept.
+   * POINT_LIMIT on a subsample unless `allPoints`; a mesh as a cloud of its vertices when `asCloud`).
+   * `bytes` is transferred (detached) after a copy is kept.
    */
-  async open(fileName: string, bytes: ArrayBuffer, neighbours: number, allPoints: boolean): Promise<ReplyFor['open']> {
+  async open(fileName: string, bytes: ArrayBuffer, choice: OpenChoice): Promise<ReplyFor['open']> {
     const kept = bytes.slice(0);
-    const reply = await this.request({ type: 'open', fileName, bytes, withArrays: true, neighbours, allPoints }, [bytes]);
-    this.current = { fileName, bytes: kept, neighbours, allPoints };
+    const reply = await this.request({ type: 'open', fileName, bytes, withArrays: true, ...choice }, [bytes]);
+    this.current = { fileName, bytes: kept, choice };
     return reply;
   }
 
@@ -266,7 +268,7 @@ export class GeometryClient {
     const kept = this.current;
     if (kept && 'bytes' in kept) {
       const copy = kept.bytes.slice(0);
-      restored = this.request({ type: 'open', fileName: kept.fileName, bytes: copy, withArrays: false, neighbours: kept.neighbours, allPoints: kept.allPoints }, [copy]);
+      restored = this.request({ type: 'open', fileName: kept.fileName, bytes: copy, withArrays: false, ...kept.choice }, [copy]);
     } else if (kept) {
       const positions = kept.positions.slice(), triangles = kept.triangles.slice();
       restored = this.request({ type: 'restore', fileName: kept.fileName, positions, triangles, refined: kept.refined }, [positions.buffer, triangles.buffer]);

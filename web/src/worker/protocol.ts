@@ -13,7 +13,17 @@ import type { MeshFormat, ShapeFormat } from '../../../lib/io/types.ts';
 // ---------------------------------------------------------------------------------------------
 // Page -> worker
 
-export interface OpenRequest {
+/** How a file is opened: the page's choices, kept to open it again. */
+export interface OpenChoice {
+  /** k of a point cloud's neighbourhoods (the `neighbours` option), should the file be one or run as one. */
+  neighbours: number;
+  /** A point cloud above POINT_LIMIT is computed on all its points (the offer's choice), not on a subsample. */
+  allPoints: boolean;
+  /** A mesh file runs as a point cloud of its vertices (AS_CLOUD, lib/cloud/from-mesh.ts); nothing for a cloud file. */
+  asCloud: boolean;
+}
+
+export interface OpenRequest extends OpenChoice {
   type: 'open';
   id: number;
   fileName: string;
@@ -21,10 +31,6 @@ export interface OpenRequest {
   bytes: ArrayBuffer;
   /** Send positions and triangles back (false when re-opening a mesh the page already shows). */
   withArrays: boolean;
-  /** k of a point cloud's neighbourhoods (the `neighbours` option), should the file be one. */
-  neighbours: number;
-  /** A point cloud above POINT_LIMIT is computed on all its points (the offer's choice), not on a subsample. */
-  allPoints: boolean;
 }
 
 /**
@@ -189,6 +195,8 @@ export interface CloudOpenedReply {
   repairs: string[];
   /** The cloud's point count when it was subsampled to compute on (above POINT_LIMIT, without `allPoints`), else null. */
   subsampledFrom: number | null;
+  /** The file is a mesh, run as a point cloud of its vertices (the request's `asCloud`). */
+  asCloud: boolean;
   timings: OpenTimings;
 }
 

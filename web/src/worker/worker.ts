@@ -26,9 +26,11 @@ import {
   type Skeleton,
   type Surface,
 } from '../../../lib/core/types.ts';
+import { meshAsCloud } from '../../../lib/cloud/from-mesh.ts';
 import { subsample } from '../../../lib/cloud/subsample.ts';
 import { checkCloud } from '../../../lib/io/cloud-check.ts';
-import { parseShape, type ParsedCloud } from '../../../lib/io/index.ts';
+import { parseShape } from '../../../lib/io/index.ts';
+import type { ShapeFormat } from '../../../lib/io/types.ts';
 import { repairMesh } from '../../../lib/io/repair.ts';
 import { writeLoopsObj } from '../../../lib/io/loops.ts';
 import { SKELETON_WRITERS } from '../../../lib/io/skeleton.ts';
@@ -172,9 +174,13 @@ async function open(request: OpenRequest): Promise<void> {
   progress(id, 'parse', `reading ${fileName}…`);
   const t = performance.now();
   const parsed = parseShape(new Uint8Array(request.bytes), fileName);
-  if (parsed.kind === 'cloud') return openCloud(request, parsed, t);
+  if (parsed.kind === 'cloud') return openCloud(request, { ...parsed, repairs: [], asCloud: false }, t);
   // Repair on load is part of reading the file: the page only ever sees the repaired mesh.
   const { mesh: repaired, repairs } = repairMesh(parsed);
+  if (request.asCloud) {
+    const { cloud, note } = meshAsCloud(repaired);
+    return openCloud(request, { ...cloud, format: parsed.format, warnings: [...parsed.warnings, note], repairs, asCloud: true }, t);
+  }
   const parseMs = performance.now() - t;
   const { mesh, facts, refined, surfaceError, inspectMs } = await accept(id, repaired);
 
@@ -201,15 +207,20 @@ async function open(request: OpenRequest): Promise<void> {
   );
 }
 
+/** The points a cloud opens with: a cloud file's, or a mesh file's vertices (`asCloud`, after the mesh's repairs). */
+type CloudInput = CloudArrays & { format: ShapeFormat; warnings: string[]; repairs: string[]; asCloud: boolean };
+
 /**
  * A point cloud: checked as the CLI checks it (a bad cloud is refused with its message), subsampled
  * above POINT_LIMIT unless `allPoints` (to SUBSAMPLE_TARGET points, said among the repairs: the page
  * computes on the subsample, as the CLI advises, and offers all the points), then opened in the core
  * with `neighbours`. The page gets the points left out too: it draws them all.
  */
-async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: number): Promise<void> {
+async function openCloud(request: OpenRequest, input: CloudInput, started: number): Promise<void> {
   const { id, fileName, neighbours } = request;
-  const { cloud: checked, repairs } = checkCloud(parsed, neighbours);
+  const checks = checkCloud(input, neighbours);
+  const { cloud: checked } = checks;
+  const repairs = [...input.repairs, ...checks.repairs];
   const points = checked.positions.length / 3;
   const subsampled = points > POINT_LIMIT && !request.allPoints;
   if (subsampled) progress(id, 'parse', `subsampling ${points} points to ${SUBSAMPLE_TARGET}…`); // seconds at a million
@@ -235,13 +246,14 @@ async function openCloud(request: OpenRequest, parsed: ParsedCloud, started: num
       shape: 'cloud',
       id,
       fileName,
-      format: parsed.format,
+      format: input.format,
       positions,
       facts: currentCloud.cloud.facts,
-      warnings: parsed.warnings,
+      warnings: input.warnings,
       repairs,
       leftOut: { positions: leftOutPositions, standIn: leftOutStandIn },
       subsampledFrom: subsampled ? points : null,
+      asCloud: input.asCloud,
       timings: { parseMs, inspectMs },
     },
     transferables(positions, leftOutPositions, leftOutStandIn),

@@ -25,8 +25,9 @@ function isSoftwareRenderer(): boolean {
 }
 
 /**
- * Points of a subsampled cloud a software renderer draws (a GPU draws them all): a still frame of a
- * million points took 1.25 s in Chromium's SwiftShader here, about 1.2 microseconds a point.
+ * Points of a subsampled cloud a software renderer draws (a GPU draws them all): a still frame took
+ * 1.25 s with a million points in Chromium's SwiftShader here, 0.29 s with 150,000 and 0.14 s with
+ * 100,000 (scripts/page-big-cloud.ts, docs/limits.md).
  */
 const SOFTWARE_DRAWN_POINTS = 100_000;
 

@@ -260,6 +260,19 @@ test('changing neighbours opens the cloud again with them', async ({ page }) => 
   await expect(page.getByTestId('facts-vertices')).toHaveText('1948 points');
 });
 
+test('a mesh too small to run as a cloud is refused with the message, and stays open as a mesh', async ({ page }) => {
+  await openPage(page);
+  await page.getByTestId('file-input').setInputFiles({ name: 'cube.obj', mimeType: 'text/plain', buffer: readFileSync(fixture('formats', 'cube.obj')) });
+  await expect(page.getByTestId('facts-vertices')).toHaveText('8', { timeout: 30_000 });
+  await waitForState(page, 'ready');
+  await page.getByTestId('as-cloud').check();
+  await expect(page.getByTestId('error')).toBeVisible({ timeout: 20_000 });
+  await expect(page.getByTestId('error')).toContainText('the cloud has 8 points, too few for the neighbour count k = 30');
+  await expect(page.getByTestId('as-cloud'), 'the box says what is open').not.toBeChecked();
+  await expect(page.getByTestId('facts-vertices')).toHaveText('8');
+  await expect(page.getByTestId('facts-faces')).toHaveText('12');
+});
+
 for (const [name, bytes, message] of [
   ['flat.xyz', xyz(100, () => 0), 'all 100 points lie on one plane'],
   ['few.xyz', xyz(20, (i) => (i * 7) % 3), 'the cloud has 20 points, too few for the neighbour count k = 30'],

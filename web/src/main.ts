@@ -322,16 +322,17 @@ statusCancel.addEventListener('click', () => {
   client.cancelRunning();
 });
 
-async function openFile(file: File, choice = AS_GIVEN): Promise<void> {
+/** Whether the file opened (else what was open stays, and the error says why). */
+async function openFile(file: File, choice = AS_GIVEN): Promise<boolean> {
   let bytes: ArrayBuffer;
   try {
     bytes = await file.arrayBuffer();
   } catch (error) {
     fail(`Could not read ${file.name}`, error);
     updateState();
-    return;
+    return false;
   }
-  await openBytes(file.name, bytes, null, (other) => openFile(file, other).then(() => true), choice);
+  return openBytes(file.name, bytes, null, (other) => openFile(file, other), choice);
 }
 
 async function openSample(sample: Sample, choice = AS_GIVEN): Promise<boolean> {

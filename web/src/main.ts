@@ -277,8 +277,8 @@ function showShape(layer: ShapeLayer): void {
 asCloudBox.closest('label')!.title = `${AS_CLOUD.help.charAt(0).toUpperCase()}${AS_CLOUD.help.slice(1)}, to compare CSCD-M and CSCD-PC on one shape. Opens the file again.`;
 asCloudBox.addEventListener('change', () => {
   if (!mesh) return;
-  // If the file cannot be opened so, what is open stays, and so does the box.
-  void mesh.file.reopen({ allPoints: false, asCloud: asCloudBox.checked }).then((opened) => opened || (asCloudBox.checked = !!mesh?.cloud));
+  // The box then says what is open: the other shape, or the same one if the file cannot be opened so.
+  void mesh.file.reopen({ allPoints: false, asCloud: asCloudBox.checked }).then(() => (asCloudBox.checked = !!mesh?.cloud));
 });
 
 // -- shapes above the size limit: decimate a mesh or compute on it whole; a cloud's points all --------

@@ -32,6 +32,11 @@ export interface CloudFacts extends BoundingBox {
   points: number;
   /** k of the k-nearest-neighbour search (the `neighbours` option). */
   neighbours: number;
+  /**
+   * The neighbours each point's local triangulation is made from, on average: `neighbours` where every
+   * neighbourhood lies flat (and on a noisy cloud), fewer (down to 12) where parts are thinner than it.
+   */
+  meanFlatNeighbours: number;
   /** Connected components of the tufted triangulation built from the neighbours: distances stay within one. */
   components: number;
   /** Mean edge length of the tufted triangulation (its edges join neighbouring points): the counterpart of a mesh's meanEdgeLength. */

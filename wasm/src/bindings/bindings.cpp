@@ -339,6 +339,7 @@ val toVal(const CloudFacts& f) {
   val o = val::object();
   o.set("points", f.points);
   o.set("neighbours", f.neighbours);
+  o.set("meanFlatNeighbours", f.meanFlatNeighbours);
   o.set("components", f.components);
   o.set("bboxMin", toArray(f.bboxMin));
   o.set("bboxMax", toArray(f.bboxMax));

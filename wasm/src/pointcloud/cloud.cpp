@@ -3,6 +3,7 @@
 #include "cscd/errors.h"
 #include "cscd/union_find.h"
 #include "pointcloud/exterior.h"
+#include "pointcloud/flat_neighbours.h"
 #include "pointcloud/winding.h"
 
 #include "geometrycentral/pointcloud/local_triangulation.h"
@@ -93,6 +94,28 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
     cloudGeometry = std::make_unique<PointPositionNormalGeometry>(*pointCloud, positions, normals);
   }
   cloudGeometry->kNeighborSize = unsigned(neighbours);
+  cloudGeometry->requireNeighbors();
+
+  // The MLS surface and the points' areas from the k nearest, and the noise test on that surface.
+  std::vector<Vector3> points(n);
+  std::vector<uint32_t> nearestOthers;
+  nearestOthers.reserve(n * size_t(neighbours));
+  areas.assign(n, 0);
+  for (size_t p = 0; p < n; p++) {
+    points[p] = positions[p];
+    double farthest2 = 0;
+    for (Point q : cloudGeometry->neighbors->neighbors[p]) {
+      farthest2 = std::max(farthest2, norm2(positions[q] - positions[p]));
+      nearestOthers.push_back(uint32_t(q.getIndex()));
+    }
+    areas[p] = M_PI * farthest2 / neighbours;
+  }
+  mlsSurface = std::make_unique<MlsSurface>(std::move(points), size_t(neighbours), std::move(nearestOthers));
+  noise = mlsSurface->testNoise();
+  // On a clean cloud each point's neighbours are trimmed to those that lie flat before its local
+  // triangulation (and PCA normal) is made from them; a noisy cloud's are never flat, and all k average
+  // its noise out.
+  const size_t trimmed = noise.noisy ? 0 : trimToFlat(cloudGeometry->neighbors->neighbors, positions);
   localTriangulations = handleToInds(*pointCloud, buildLocalTriangulations(*pointCloud, *cloudGeometry, true));
   std::tie(tuftedMesh, tuftedGeometry) = tuftedCover(localTriangulations, positions);
   surface::EdgeLengthGeometry& tufted = *tuftedGeometry;
@@ -117,6 +140,7 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   CloudFacts& facts = cloudFacts;
   facts.points = n;
   facts.neighbours = size_t(neighbours);
+  facts.meanFlatNeighbours = double(n * size_t(neighbours) - trimmed) / double(n);
   facts.components = size_t(componentCount);
   Vector3 low = positions[0], high = positions[0];
   for (size_t p = 1; p < n; p++) low = componentwiseMin(low, positions[p]), high = componentwiseMax(high, positions[p]);
@@ -127,26 +151,11 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   facts.normalsFromFile = !arrays.normals.empty();
 
   geodesicSolver = std::make_unique<CloudGeodesics>(tufted, component);
-
-  std::vector<Vector3> points(n);
-  std::vector<uint32_t> nearestOthers;
-  nearestOthers.reserve(n * size_t(neighbours));
-  areas.assign(n, 0);
-  for (size_t p = 0; p < n; p++) {
-    points[p] = positions[p];
-    double farthest2 = 0;
-    for (Point q : cloudGeometry->neighbors->neighbors[p]) {
-      farthest2 = std::max(farthest2, norm2(positions[q] - positions[p]));
-      nearestOthers.push_back(uint32_t(q.getIndex()));
-    }
-    areas[p] = M_PI * farthest2 / neighbours;
-  }
-  mlsSurface = std::make_unique<MlsSurface>(std::move(points), size_t(neighbours), std::move(nearestOthers));
 }
 
 const CloudNeighbourhood& Cloud::neighbourhood() {
   if (!neighbourGraph) {
-    neighbourGraph = std::make_unique<CloudNeighbourhood>(*cloudGeometry, *mlsSurface, localTriangulations);
+    neighbourGraph = std::make_unique<CloudNeighbourhood>(*cloudGeometry, *mlsSurface, noise, localTriangulations);
     localTriangulations = LocalTriangulations();
   }
   return *neighbourGraph;

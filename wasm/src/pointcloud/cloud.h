@@ -32,6 +32,9 @@ struct CloudArrays {
 struct CloudFacts {
   size_t points = 0;
   size_t neighbours = 0; // k of the k-nearest-neighbour search
+  // The neighbours each point's local triangulation is made from, on average: k where every neighbourhood
+  // lies flat (and on a noisy cloud), fewer where parts are thinner than it (pointcloud/flat_neighbours.h).
+  double meanFlatNeighbours = 0;
   size_t components = 0; // of the tufted triangulation: heat flows within each one only
   std::array<double, 3> bboxMin{};
   std::array<double, 3> bboxMax{};
@@ -94,6 +97,7 @@ private:
   std::unique_ptr<geometrycentral::surface::EdgeLengthGeometry> tuftedGeometry;
   std::unique_ptr<CloudGeodesics> geodesicSolver;
   std::unique_ptr<MlsSurface> mlsSurface;
+  NoiseTest noise;
   std::unique_ptr<CloudNeighbourhood> neighbourGraph;
   std::unique_ptr<CloudCutLocusSolver> cutLocus;
   std::unique_ptr<PointWinding> windingNumber;

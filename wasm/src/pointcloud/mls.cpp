@@ -36,6 +36,10 @@ Eigen::Matrix<double, 6, 1> monomials(double u, double v) {
   return m;
 }
 
+// The noise test's sample and threshold (NoiseTest).
+constexpr size_t kNoiseSampleStep = 16;
+constexpr double kMinQuadraticShare = 0.2;
+
 // projectOnPatches blends the fits of this many nearest cloud points (16 gave rougher skeletons, not
 // smoother ones: docs/pointcloud.md, "Loops on patches").
 constexpr size_t kBlendedPatches = 8;
@@ -207,6 +211,13 @@ MlsPoint MlsSurface::projectOnPatches(Vector3 query, MlsNeighbourCache* cache) c
   }
   if (!(weightSum > 0)) return project(query, cache); // the nearest points all as far as the one left out
   return MlsPoint{position / weightSum, normal.normalize(), 2 * quadratics > used};
+}
+
+NoiseTest MlsSurface::testNoise() const {
+  NoiseTest test;
+  for (size_t p = 0; p < points.size(); p += kNoiseSampleStep, test.sampled++) test.quadratics += project(points[p]).quadratic;
+  test.noisy = double(test.quadratics) < kMinQuadraticShare * double(test.sampled);
+  return test;
 }
 
 size_t MlsSurface::nearestPoint(Vector3 query) const { return finder->kNearest(query, 1).front(); }

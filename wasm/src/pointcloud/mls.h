@@ -39,6 +39,15 @@ struct MlsNeighbourCache {
   std::vector<std::pair<double, size_t>> byDistance;
 };
 
+// Whether a cloud is noisy, from its MLS surface: it is when the quadratic height is fitted at fewer than
+// a fifth of a sample of its points (every 16th): the clean clouds measured fit it at 34-100% of their
+// points, the noisy ones (0.5-1% of the diagonal) at none (docs/pointcloud.md, "Noisy clouds").
+struct NoiseTest {
+  size_t sampled = 0;
+  size_t quadratics = 0; // sampled points where the quadratic was fitted
+  bool noisy = false;
+};
+
 class MlsSurface {
 public:
   // nearestOthers: each point's k = `neighbours` nearest other points, nearest first, k entries a point
@@ -55,6 +64,8 @@ public:
   // 7 times cheaper than `project` on a loop; on a clean cloud the two surfaces lie within a small share
   // of a spacing of each other (docs/pointcloud.md, "Loops on patches").
   MlsPoint projectOnPatches(geometrycentral::Vector3 query, MlsNeighbourCache* cache) const;
+
+  NoiseTest testNoise() const;
 
   // The index of the cloud point nearest to `query`.
   size_t nearestPoint(geometrycentral::Vector3 query) const;

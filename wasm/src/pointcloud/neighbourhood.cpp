@@ -18,18 +18,15 @@ namespace {
 // where a finger is three spacings thick); across a gap between two sheets, by nearly 90 degrees.
 constexpr double kMaxElevation = 45 * M_PI / 180;
 
-// A cloud is noisy when the MLS surface's quadratic height is fitted at fewer than this share of a
-// sample of its points (every kNoiseSampleStep-th): the clean clouds measured fit it at 34-100% of
-// their points, the noisy ones (0.5-1% of the diagonal) at none (docs/pointcloud.md, "Noisy clouds").
-constexpr double kMinQuadraticShare = 0.2;
-constexpr size_t kNoiseSampleStep = 16;
 // On a noisy cloud, an edge that leaves a tangent plane by more than this is a bridge whatever the MLS
 // surface says: noise tilts edges of the surface less, edges across a gap run at nearly 90 degrees.
 constexpr double kMaxNoisyElevation = 70 * M_PI / 180;
 
 } // namespace
 
-CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const MlsSurface& mls, const LocalTriangulations& triangles) {
+CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const MlsSurface& mls, const NoiseTest& noise,
+                                       const LocalTriangulations& triangles)
+    : noisy(noise.noisy), sampledQuadratics(noise.quadratics) {
   PointCloud& cloud = geometry.cloud;
   const size_t n = cloud.nPoints();
   geometry.requireNormals();
@@ -51,17 +48,14 @@ CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const Ml
     const Vector3 direction = unit(b - a);
     return std::abs(dot(direction, normalA)) > sine || std::abs(dot(direction, normalB)) > sine;
   };
-  // Points on the MLS surface, projected when first asked for (a sample to tell whether the cloud is
-  // noisy, then on a noisy cloud the ends of the edges that leave a tangent plane).
+  // Points on the MLS surface, projected when first asked for: on a noisy cloud, the ends of the edges
+  // that leave a tangent plane.
   std::vector<MlsPoint> projected(n);
   std::vector<char> isProjected(n, 0);
   auto onMls = [&](size_t p) -> const MlsPoint& {
     if (!isProjected[p]) projected[p] = mls.project(pointPositions[p]), isProjected[p] = 1;
     return projected[p];
   };
-  size_t sampled = 0;
-  for (size_t p = 0; p < n; p += kNoiseSampleStep, sampled++) sampledQuadratics += onMls(p).quadratic;
-  noisy = double(sampledQuadratics) < kMinQuadraticShare * double(sampled);
   auto leavesTangentPlane = [&](size_t a, size_t b) {
     if (!leaves(pointPositions[a], normals[a], pointPositions[b], normals[b], maxSine)) return false;
     if (!noisy || leaves(pointPositions[a], normals[a], pointPositions[b], normals[b], maxNoisySine)) return true;

@@ -28,8 +28,10 @@ using LocalTriangulations = geometrycentral::pointcloud::PointData<std::vector<s
 // normals, where the noise is averaged out, and kept if it runs along the surface there. A clean cloud's graph is the test alone.
 class CloudNeighbourhood {
 public:
-  // triangles: the points' local triangulations, those the tufted triangulation was built from.
-  CloudNeighbourhood(geometrycentral::pointcloud::PointPositionGeometry& geometry, const MlsSurface& mls, const LocalTriangulations& triangles);
+  // triangles: the points' local triangulations, those the tufted triangulation was built from; noise:
+  // the MLS surface's noise test.
+  CloudNeighbourhood(geometrycentral::pointcloud::PointPositionGeometry& geometry, const MlsSurface& mls, const NoiseTest& noise,
+                     const LocalTriangulations& triangles);
 
   // Each point's neighbours in their order around it in its tangent plane (so a ring, as on a mesh).
   const NeighbourGraph& graph() const { return neighbourGraph; }
@@ -60,9 +62,9 @@ private:
   std::vector<int> component;
   size_t components = 0;
   size_t bridges = 0;
+  bool noisy;
+  size_t sampledQuadratics;
   size_t alongMls = 0;
-  bool noisy = false;
-  size_t sampledQuadratics = 0;
   std::vector<geometrycentral::Vector3> pointPositions;
   std::vector<geometrycentral::Vector3> normals;
   std::vector<std::array<geometrycentral::Vector3, 2>> tangentBasis;

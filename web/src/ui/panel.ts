@@ -135,7 +135,7 @@ export class Panel {
     for (const id of ['facts-faces', 'facts-edges', 'facts-boundary-loops', 'facts-genus', 'facts-euler', 'facts-manifold', 'facts-oriented']) set(id, '–');
     set('facts-components', f.components);
     set('facts-bbox-diagonal', formatLength(f.bboxDiagonal));
-    set('facts-mean-edge', `${formatLength(f.meanSpacing)} (spacing, ${f.neighbours} neighbours)`);
+    set('facts-mean-edge', `${formatLength(f.meanSpacing)} (spacing, ${f.neighbours} neighbours, ${f.meanFlatNeighbours.toFixed(1)} flat)`);
   }
 
   /** Parser warnings plus the page's own notes about the mesh. */

@@ -113,7 +113,7 @@ export const OPTIONS: readonly OptionSpec[] = Object.freeze([
   },
   {
     key: 'neighbours', flag: 'neighbours', shapes: 'cloud', stage: 'open', commands: 'all', kind: 'integer', default: 30, range: [3, 256], placeholder: 'K',
-    help: 'point clouds only: neighbours of each point (k of the k-nearest-neighbour search) that its local triangulation, and so the distances, are built from; fewer follow parts thinner than the neighbourhood, more span sparse regions, open rims and noise',
+    help: 'point clouds only: neighbours of each point (k of the k-nearest-neighbour search) that its local triangulation, and so the distances, are built from, on a clean cloud cut to those that lie flat (at least 12); fewer follow parts thinner than the neighbourhood, more span sparse regions, open rims and noise',
   },
 ] satisfies OptionSpec[]);
 

@@ -249,14 +249,15 @@ test('after a crash of the core the worker is restarted with the cloud, and the 
   await expect(page.getByTestId('facts-vertices')).toHaveText('1948 points');
 });
 
-test('changing neighbours opens the cloud again with them', async ({ page }) => {
+test('changing neighbours opens the cloud again with them, and the panel says how many lie flat', async ({ page }) => {
   await openPage(page);
   await page.getByTestId('file-input').setInputFiles({ name: 'bob_subsample.ply', mimeType: 'application/octet-stream', buffer: readFileSync(fixture('clouds', 'bob_subsample.ply')) });
-  await expect(page.getByTestId('facts-mean-edge')).toContainText('30 neighbours', { timeout: 30_000 });
+  // 19.2 of bob_subsample's 30 nearest lie flat on average (tests/unit/cloud-flat-neighbours.test.ts); at 12, all 12.
+  await expect(page.getByTestId('facts-mean-edge')).toContainText('30 neighbours, 19.2 flat', { timeout: 30_000 });
   const input = page.getByTestId('opt-neighbours').locator('input');
   await input.fill('12');
   await input.press('Enter');
-  await expect(page.getByTestId('facts-mean-edge')).toContainText('12 neighbours', { timeout: 30_000 });
+  await expect(page.getByTestId('facts-mean-edge')).toContainText('12 neighbours, 12.0 flat', { timeout: 30_000 });
   await expect(page.getByTestId('facts-vertices')).toHaveText('1948 points');
 });
 

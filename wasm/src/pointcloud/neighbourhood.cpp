@@ -24,9 +24,9 @@ constexpr double kMaxNoisyElevation = 70 * M_PI / 180;
 
 } // namespace
 
-CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const MlsSurface& mls, const NoiseTest& noise,
+CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const MlsSurface& mls, const NoiseTest& noise_,
                                        const LocalTriangulations& triangles)
-    : noisy(noise.noisy), sampledQuadratics(noise.quadratics) {
+    : noise(noise_) {
   PointCloud& cloud = geometry.cloud;
   const size_t n = cloud.nPoints();
   geometry.requireNormals();
@@ -58,7 +58,7 @@ CloudNeighbourhood::CloudNeighbourhood(PointPositionGeometry& geometry, const Ml
   };
   auto leavesTangentPlane = [&](size_t a, size_t b) {
     if (!leaves(pointPositions[a], normals[a], pointPositions[b], normals[b], maxSine)) return false;
-    if (!noisy || leaves(pointPositions[a], normals[a], pointPositions[b], normals[b], maxNoisySine)) return true;
+    if (!noise.noisy || leaves(pointPositions[a], normals[a], pointPositions[b], normals[b], maxNoisySine)) return true;
     // The same test where the noise is averaged out: the ends' projections and the MLS normals.
     const MlsPoint &pa = onMls(a), &pb = onMls(b);
     if (!(norm(pb.position - pa.position) > 0) || leaves(pa.position, pa.normal, pb.position, pb.normal, maxSine)) return true;

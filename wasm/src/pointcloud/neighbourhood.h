@@ -43,11 +43,11 @@ public:
   size_t bridgesRemoved() const { return bridges; }
   // Whether the cloud was found noisy, and the edges kept then because they run along the MLS surface
   // though they leave their ends' tangent planes.
-  bool noisyCloud() const { return noisy; }
+  bool noisyCloud() const { return noise.noisy; }
   size_t keptOnMls() const { return alongMls; }
   // Whether the MLS surface's quadratic was fitted at any point of the noise test's sample (on the shared
   // noisy clouds it was at none; on the trees' scans, at 9%).
-  bool curvatureSampled() const { return sampledQuadratics > 0; }
+  bool curvatureSampled() const { return noise.quadratics > 0; }
 
   const std::vector<geometrycentral::Vector3>& positions() const { return pointPositions; }
   const geometrycentral::Vector3& position(size_t p) const { return pointPositions[p]; }
@@ -62,8 +62,7 @@ private:
   std::vector<int> component;
   size_t components = 0;
   size_t bridges = 0;
-  bool noisy;
-  size_t sampledQuadratics;
+  NoiseTest noise;
   size_t alongMls = 0;
   std::vector<geometrycentral::Vector3> pointPositions;
   std::vector<geometrycentral::Vector3> normals;

@@ -1,7 +1,8 @@
 // Noisy clouds (docs/pointcloud.md, "Noisy clouds"): the neighbourhood graph's bridge test on the MLS
 // surface where the noise hides the curvature, so that the graph of a noisy cloud holds together; clean
 // clouds keep the graph they had. Farther targets where the nearest loops enclose nothing. Orientation
-// patches not turned on noise. Regions that tile a noisy surface joined by a tree, not one star.
+// patches not turned on noise. Regions that tile a noisy surface joined by a tree, not one star. Loops
+// round a tube the scan left open are cross-sections, though the exterior flood reaches their centroids.
 import path from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { subsampleCloud } from '../../lib/cloud/subsample.ts';
@@ -169,6 +170,44 @@ describe('noisy clouds', () => {
       expect(skeleton.stats.packed).toBeGreaterThanOrEqual(5);
     } finally {
       bob.dispose();
+    }
+  });
+
+  it('gives a scan open at its ends a skeleton along it: loops round an open trunk are cross-sections', () => {
+    // The trunk of tree_woodske_SW below its branches, open at the ground and where it was cut: the
+    // exterior flood comes in at both ends and reaches the trunk's axis, so every loop round it failed the
+    // centroid test and the skeleton was one node (docs/pointcloud.md, "Scans open at an end").
+    const shape = readCloud('tree_sw_trunk.ply');
+    const trunk = core.openCloud(shape);
+    try {
+      expect(trunk.neighbourhood().noisy).toBe(true);
+      const skeleton = trunk.skeleton({ n: 20, seed: 1 });
+      expect(skeleton.stats.cycles).toBe(0);
+      expect(leafIndices(skeleton.radii.length, skeleton.edges)).toHaveLength(2);
+      const z = (values: ArrayLike<number>) => Array.from({ length: values.length / 3 }, (_, i) => values[3 * i + 2]);
+      const [pointsZ, nodesZ] = [z(shape.positions), z(skeleton.nodes)];
+      const height = Math.max(...pointsZ) - Math.min(...pointsZ);
+      expect(Math.max(...nodesZ) - Math.min(...nodesZ)).toBeGreaterThan(0.75 * height);
+      // Each node on the axis: the centre of the points within a tenth of the trunk's radius (0.28) of its height.
+      for (let node = 0; node < nodesZ.length; node++) {
+        const near = Array.from({ length: pointsZ.length }, (_, i) => i).filter((i) => Math.abs(pointsZ[i] - nodesZ[node]) < 0.03);
+        const centre = [0, 1].map((k) => near.reduce((sum, i) => sum + shape.positions[3 * i + k], 0) / near.length);
+        const off = Math.hypot(skeleton.nodes[3 * node] - centre[0], skeleton.nodes[3 * node + 1] - centre[1]);
+        expect(off, `node ${node}`).toBeLessThan(0.05);
+      }
+      // A loop round the trunk passes the centroid test though the flood puts its centroid outside.
+      const stages = trunk.separatorStages(0);
+      expect(stages.status).toBe('ok');
+      expect(stages.centroidInside).toBe(true);
+      const loop = stages.loop;
+      const centroid = new Float64Array([0, 1, 2].map((k) => {
+        let sum = 0;
+        for (let i = k; i < loop.length; i += 3) sum += loop[i];
+        return sum / (loop.length / 3);
+      }));
+      expect(trunk.inside(centroid)[0]).toBe(0);
+    } finally {
+      trunk.dispose();
     }
   });
 });

@@ -1,6 +1,7 @@
 #include "pointcloud/cloud.h"
 
 #include "cscd/errors.h"
+#include "cscd/measures.h"
 #include "cscd/union_find.h"
 #include "pointcloud/exterior.h"
 #include "pointcloud/flat_neighbours.h"
@@ -175,6 +176,11 @@ bool Cloud::inside(const geometrycentral::Vector3& p) {
   if (!neighbourhood().noisyCloud()) return winding()(p) > 0.5;
   if (!exterior) exterior = std::make_unique<ExteriorGrid>(neighbourhood().positions(), cloudFacts.meanSpacing);
   return exterior->inside(p);
+}
+
+bool Cloud::loopInside(const std::vector<geometrycentral::Vector3>& loop) {
+  if (inside(loopCentroid(loop, true))) return true;
+  return neighbourhood().noisyCloud() && exterior->enclosesCrossSection(loop);
 }
 
 const std::vector<std::vector<uint32_t>>& Cloud::tuftedNeighbours() {

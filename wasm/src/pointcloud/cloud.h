@@ -78,6 +78,10 @@ public:
   // (CloudNeighbourhood::noisyCloud) not joined to the outside by empty space (pointcloud/exterior.h),
   // since PCA normals cannot be oriented on parts as thin as the noise. Built on first use.
   bool inside(const geometrycentral::Vector3& p);
+  // Whether a closed loop on the cloud goes round its inside (the centroid test of paper Sec. 4.2.2): its
+  // centroid inside, or, on a noisy cloud, the loop a cross-section of a tube the scan left open at an
+  // end, through which the exterior flood reached its axis (ExteriorGrid::enclosesCrossSection).
+  bool loopInside(const std::vector<geometrycentral::Vector3>& loop);
   // The tufted triangulation's edges as each point's neighbours, each once (the cover repeats them): the
   // surface graph a loop's sides are flooded over (pointcloud/shorten.cpp), built on first use.
   const std::vector<std::vector<uint32_t>>& tuftedNeighbours();

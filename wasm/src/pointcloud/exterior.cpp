@@ -1,5 +1,7 @@
 #include "pointcloud/exterior.h"
 
+#include "cscd/measures.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -14,6 +16,17 @@ constexpr double kMaxCells = 8e6;
 constexpr double kGrowth = 1.25;
 // Empty cubes around the box, so that the border is outside wherever the cloud does not reach it.
 constexpr long kMargin = 2;
+// A cross-section of a tube open at an end (enclosesCrossSection): every point of the loop within this
+// share of its radius (its length over 2 pi) of its plane, and between these shares of it from its
+// centroid; the shell met by every one of this many rays in its plane within this many radii; and by
+// all but this share of this many directions in space (a tube's opening seen from one radius inside it
+// is 15% of them; a hole's rim lets out at least the half on its open side).
+constexpr double kFlat = 0.2;
+constexpr double kRoundLow = 0.6, kRoundHigh = 1.5;
+constexpr int kPlaneRays = 32;
+constexpr double kPlaneReach = 2.0;
+constexpr int kSpaceRays = 64;
+constexpr double kEscapeShare = 0.25;
 
 } // namespace
 
@@ -34,7 +47,7 @@ ExteriorGrid::ExteriorGrid(const std::vector<Vector3>& points, double spacing) {
   for (int a = 0; a < 3; a++) dims[a] = long(std::floor((high[a] - low[a]) / cellSize)) + 1 + 2 * kMargin;
   origin = low - double(kMargin) * cellSize * Vector3{1, 1, 1};
 
-  std::vector<uint8_t> solid(size_t(dims[0] * dims[1] * dims[2]), 0);
+  solid.assign(size_t(dims[0] * dims[1] * dims[2]), 0);
   for (const Vector3& p : points) {
     const std::array<long, 3> c = cellOf(p);
     for (long dz = -1; dz <= 1; dz++)
@@ -87,6 +100,44 @@ std::array<long, 3> ExteriorGrid::cellOf(const Vector3& p) const {
   std::array<long, 3> c;
   for (int a = 0; a < 3; a++) c[a] = long(std::floor((p[a] - origin[a]) / cellSize));
   return c;
+}
+
+bool ExteriorGrid::meetsShell(const Vector3& p, const Vector3& d, double reach) const {
+  for (double t = 0; t <= reach; t += cellSize / 2) {
+    const std::array<long, 3> c = cellOf(p + t * d);
+    for (int a = 0; a < 3; a++)
+      if (!(c[a] >= 0 && c[a] < dims[a])) return false;
+    if (solid[cellIndex(c)]) return true;
+  }
+  return false;
+}
+
+bool ExteriorGrid::enclosesCrossSection(const std::vector<Vector3>& loop) const {
+  if (loop.size() < 3) return false;
+  double length = 0;
+  for (size_t i = 0; i < loop.size(); i++) length += norm(loop[(i + 1) % loop.size()] - loop[i]);
+  const double radius = length / (2 * M_PI);
+  const Vector3 centre = loopCentroid(loop, true), normal = loopNormal(loop);
+  if (!(radius > 0) || !isfinite(centre) || norm(normal) == 0) return false;
+  for (const Vector3& p : loop) {
+    const double across = std::abs(dot(p - centre, normal)), away = norm(p - centre);
+    if (across > kFlat * radius || away < kRoundLow * radius || away > kRoundHigh * radius) return false;
+  }
+  Vector3 u = cross(normal, Vector3{1, 0, 0});
+  if (norm(u) < 0.5) u = cross(normal, Vector3{0, 1, 0});
+  u = u.normalize();
+  const Vector3 w = cross(normal, u);
+  for (int k = 0; k < kPlaneRays; k++) {
+    const double angle = 2 * M_PI * k / kPlaneRays;
+    if (!meetsShell(centre, std::cos(angle) * u + std::sin(angle) * w, kPlaneReach * radius)) return false;
+  }
+  // Directions spread evenly over the sphere (a Fibonacci lattice); a ray that leaves the grid escapes.
+  int escaped = 0;
+  for (int k = 0; k < kSpaceRays; k++) {
+    const double z = 1 - (2 * k + 1.0) / kSpaceRays, r = std::sqrt(1 - z * z), phi = k * M_PI * (3 - std::sqrt(5.0));
+    if (!meetsShell(centre, Vector3{r * std::cos(phi), r * std::sin(phi), z}, INFINITY)) escaped++;
+  }
+  return escaped <= kEscapeShare * kSpaceRays;
 }
 
 bool ExteriorGrid::inside(const Vector3& p) const {

@@ -23,13 +23,26 @@ public:
 
   bool inside(const geometrycentral::Vector3& p) const;
 
+  // Whether a closed loop whose centroid the flood reached goes round a tube open at an end: the flood
+  // comes in through the opening of a scan that is open (a trunk at the ground, a pipe, a statue without
+  // its base) and would put the axis of the whole tube outside. Such a loop is a cross-section: round and
+  // flat, the shell all round its centroid in its plane, and the shell in most directions from its
+  // centroid in space too (the flood's way in is a narrow cone). A loop round the rim of a hole or round
+  // the hole of a handle is round, flat and enclosed in its plane as well, but a hemisphere or more of
+  // the directions from its centroid leads out.
+  bool enclosesCrossSection(const std::vector<geometrycentral::Vector3>& loop) const;
+
 private:
   size_t cellIndex(std::array<long, 3> cell) const { return (size_t(cell[2]) * dims[1] + size_t(cell[1])) * dims[0] + size_t(cell[0]); }
   std::array<long, 3> cellOf(const geometrycentral::Vector3& p) const;
+  // Marches from p along the unit direction d (half a cube a step) for at most `reach`: whether it meets
+  // a solid cube (the shell) before that and before it leaves the grid.
+  bool meetsShell(const geometrycentral::Vector3& p, const geometrycentral::Vector3& d, double reach) const;
 
   geometrycentral::Vector3 origin;
   double cellSize = 0;
   std::array<long, 3> dims{};
+  std::vector<uint8_t> solid; // per cube: 1 where it or one of its 26 neighbours holds a point (the shell)
   std::vector<uint8_t> inner; // per cube: 0 where empty space joins it to the border, or next to such a cube
 };
 

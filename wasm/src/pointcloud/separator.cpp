@@ -111,7 +111,7 @@ CloudSeparatorStages computeCloudSeparatorStages(Cloud& cloud, size_t source, co
   if (!shorten) return result;
 
   result.score = separatorScore(result.areas, result.length);
-  result.centroidInside = cloud.inside(loopCentroid(result.loop, true));
+  result.centroidInside = cloud.loopInside(result.loop);
   clock.lap("measures");
   return result;
 }

@@ -446,7 +446,9 @@ export interface Cloud {
   /**
    * Whether each point (xyz triples) is inside the shape, 1 or 0, as the centroid test and node placement
    * decide it: the winding number over one half on a clean cloud; on a noisy one, not joined to the
-   * outside by empty space (docs/pointcloud.md, "Inside a noisy cloud").
+   * outside by empty space (docs/pointcloud.md, "Inside a noisy cloud"). On a noisy cloud the centroid
+   * test also passes a loop round a tube the scan left open, whose centroid this puts outside
+   * (docs/pointcloud.md, "Scans open at an end").
    */
   inside(points: Float64Array): Uint8Array;
   /**

@@ -10,8 +10,9 @@ using namespace geometrycentral;
 namespace cscd {
 namespace {
 
-// A grid of at most this many cubes (8 MB for the flags kept, 24 MB while they are built): a cloud whose
-// box holds more cubes of a spacing (clusters far apart) gets cubes wider by kGrowth at a time, a coarser test.
+// A grid of at most this many cubes (16 MB for the two flags kept, 24 MB while they are built): a cloud
+// whose box holds more cubes of a spacing (clusters far apart) gets cubes wider by kGrowth at a time, a
+// coarser test.
 constexpr double kMaxCells = 8e6;
 constexpr double kGrowth = 1.25;
 // Empty cubes around the box, so that the border is outside wherever the cloud does not reach it.

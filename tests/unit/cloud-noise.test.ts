@@ -13,6 +13,12 @@ import { degrees } from './support/topology.ts';
 import { leafIndices } from '../../bench/metrics.ts';
 
 const readCloud = (name: string) => readCloudFile(fixture('clouds', name));
+/** The mean of a polyline's points (xyz triples). */
+const centroidOf = (points: ArrayLike<number>) => [0, 1, 2].map((k) => {
+  let sum = 0;
+  for (let i = k; i < points.length; i += 3) sum += points[i];
+  return sum / (points.length / 3);
+});
 
 let core: Core;
 beforeAll(async () => {
@@ -199,13 +205,7 @@ describe('noisy clouds', () => {
       const stages = trunk.separatorStages(0);
       expect(stages.status).toBe('ok');
       expect(stages.centroidInside).toBe(true);
-      const loop = stages.loop;
-      const centroid = new Float64Array([0, 1, 2].map((k) => {
-        let sum = 0;
-        for (let i = k; i < loop.length; i += 3) sum += loop[i];
-        return sum / (loop.length / 3);
-      }));
-      expect(trunk.inside(centroid)[0]).toBe(0);
+      expect(trunk.inside(new Float64Array(centroidOf(stages.loop)))[0]).toBe(0);
     } finally {
       trunk.dispose();
     }
@@ -221,13 +221,7 @@ describe('noisy clouds', () => {
       expect(torus.skeleton({ n: 20, seed: 1 }).stats.cycles).toBe(1);
       const aroundHole = torus.separatorStages(1025);
       expect(aroundHole.status).toBe('ok');
-      const loop = aroundHole.loop;
-      const centroid = [0, 1, 2].map((k) => {
-        let sum = 0;
-        for (let i = k; i < loop.length; i += 3) sum += loop[i];
-        return sum / (loop.length / 3);
-      });
-      expect(Math.hypot(...centroid)).toBeLessThan(0.1); // the torus's centre (radii 1 and 0.4)
+      expect(Math.hypot(...centroidOf(aroundHole.loop))).toBeLessThan(0.1); // the torus's centre (radii 1 and 0.4)
       expect(aroundHole.centroidInside).toBe(false);
     } finally {
       torus.dispose();

@@ -5,7 +5,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { CoreError, loadCoreNode, type Cloud, type Core, type Polyline, type Sphere } from '../../lib/core/node.ts';
-import { random } from '../../lib/core/random.ts';
+import { gaussian, random } from '../../lib/core/random.ts';
 import { fixture, sharedData } from '../paths.ts';
 import { readCloudFile, revolutionPoints, spherePoints } from './support/clouds.ts';
 
@@ -92,7 +92,7 @@ describe('MLS projection on a cloud', () => {
     const next = random(12);
     const { positions } = spherePoints(4000, 5);
     for (let i = 0; i < 4000; i++) {
-      const noise = 1 + 0.02 * Math.sqrt(-2 * Math.log(1 - next())) * Math.cos(2 * Math.PI * next());
+      const noise = 1 + 0.02 * gaussian(next);
       for (let c = 0; c < 3; c++) positions[3 * i + c] *= noise;
     }
     const noisy = core.openCloud({ positions, normals: null });
@@ -190,7 +190,7 @@ describe('a loop around a noisy tube', () => {
   function tubeCloud(noise: number): Cloud {
     const positions = revolutionPoints(4000, () => 1, -3, 3, 8);
     const next = random(3);
-    for (let i = 0; i < positions.length; i++) positions[i] += noise * Math.sqrt(-2 * Math.log(1 - next())) * Math.cos(2 * Math.PI * next());
+    for (let i = 0; i < positions.length; i++) positions[i] += noise * gaussian(next);
     return core.openCloud({ positions, normals: null });
   }
   const tilted = loopOf(40, (t) => [Math.cos(t), Math.sin(t), 0.6 * Math.cos(t) + 0.15 * Math.sin(3 * t)]);

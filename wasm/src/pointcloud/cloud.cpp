@@ -172,15 +172,18 @@ const PointWinding& Cloud::winding() {
   return *windingNumber;
 }
 
-bool Cloud::inside(const geometrycentral::Vector3& p) {
-  if (!neighbourhood().noisyCloud()) return winding()(p) > 0.5;
+const ExteriorGrid& Cloud::exteriorGrid() {
   if (!exterior) exterior = std::make_unique<ExteriorGrid>(neighbourhood().positions(), cloudFacts.meanSpacing);
-  return exterior->inside(p);
+  return *exterior;
+}
+
+bool Cloud::inside(const geometrycentral::Vector3& p) {
+  return neighbourhood().noisyCloud() ? exteriorGrid().inside(p) : winding()(p) > 0.5;
 }
 
 bool Cloud::loopInside(const std::vector<geometrycentral::Vector3>& loop) {
   if (inside(loopCentroid(loop, true))) return true;
-  return neighbourhood().noisyCloud() && exterior->enclosesCrossSection(loop);
+  return neighbourhood().noisyCloud() && exteriorGrid().enclosesCrossSection(loop);
 }
 
 const std::vector<std::vector<uint32_t>>& Cloud::tuftedNeighbours() {

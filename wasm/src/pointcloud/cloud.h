@@ -89,6 +89,9 @@ public:
   ~Cloud();
 
 private:
+  // The noisy cloud's inside test (pointcloud/exterior.h), built on first use.
+  const ExteriorGrid& exteriorGrid();
+
   CloudFacts cloudFacts;
   std::vector<int> component;
   std::vector<double> areas;

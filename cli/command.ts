@@ -147,7 +147,7 @@ export async function readShape(file: string, io: CliIo, neighbours: number, set
 function meshCloud(parsed: ParsedMesh, file: string, io: CliIo, neighbours: number, settings: ReadSettings): InputCloud {
   const mesh = inputMesh(parsed, file, io, { printWarnings: false });
   const { cloud: vertices, pointOfVertex, note } = meshAsCloud(mesh);
-  const { cloud, repairs, pointMap: checkedPoint } = checkCloud(vertices, neighbours);
+  const { cloud, repairs, pointMap: checkedPoint } = checkCloud(vertices, neighbours, { outliers: false });
   const warnings = [...parsed.warnings, note], allRepairs = [...mesh.repairs, ...repairs];
   reportInput(file, warnings, allRepairs, io, settings);
   const pointMap = mesh.vertexMap.map((v) => (v < 0 || pointOfVertex[v] < 0 ? -1 : checkedPoint[pointOfVertex[v]]));

@@ -47,7 +47,7 @@ async function meshDistance(mesh: InputMesh, source: number, file: string, io: C
 
 async function cloudDistance(cloudFile: InputCloud, source: number, file: string, io: CliIo, options: CloudOptions): Promise<string> {
   const { pointMap } = cloudFile;
-  if (pointMap[source] < 0) throw new UsageError(`--source ${source} is a point the checks removed (a non-finite coordinate, or with --${AS_CLOUD.flag} a vertex used by no face)`);
+  if (pointMap[source] < 0) throw new UsageError(`--source ${source} is a point the checks removed (a non-finite coordinate, a stray point, or with --${AS_CLOUD.flag} a vertex used by no face)`);
   const cloud = await openCloud(cloudFile, options, file, io);
   try {
     // Infinity (another component) is written as null by JSON.stringify.

@@ -12,13 +12,16 @@
  *    scaled to it;
  * 3. merge duplicate points, closer than DUPLICATE_TOLERANCE x the bounding-box diagonal: each joins
  *    the first earlier point in reach, whose position is kept; their normals are summed and scaled to unit length;
- * 4. refuse a cloud of k points or fewer, k being the neighbour count: every point needs k others;
- * 5. refuse a cloud with no thickness (all points on a line or a plane), from the covariance's
+ * 4. remove outliers, points that stand alone away from the others (lib/cloud/outliers.ts), unless
+ *    the settings say not to (a mesh's vertices);
+ * 5. refuse a cloud of k points or fewer, k being the neighbour count: every point needs k others;
+ * 6. refuse a cloud with no thickness (all points on a line or a plane), from the covariance's
  *    eigenvalues: the spread across the line or plane below FLAT_TOLERANCE of the spread along it.
  *
  * A cloud that needs none of this comes back as the very same object. Otherwise the points left keep
  * their order (the first of duplicates stands for them) and `pointMap` says where each input point went.
  */
+import { findOutliers, OUTLIER_NEIGHBOURS, OUTLIER_RATIO } from '../cloud/outliers.ts';
 import { boundingBoxDiagonal, count, weld } from './repair.ts';
 import { MeshFormatError, type CloudArrays } from './types.ts';
 
@@ -41,7 +44,13 @@ export interface CloudCheckResult<C extends CloudArrays> {
   pointMap: Int32Array;
 }
 
-export function checkCloud<C extends CloudArrays>(cloud: C, neighbours: number): CloudCheckResult<C> {
+/** What the checks may do besides what they always do. */
+export interface CloudCheckSettings {
+  /** Remove outliers (lib/cloud/outliers.ts): on for scans; off for a mesh's vertices, which lie on its surface by construction. */
+  outliers: boolean;
+}
+
+export function checkCloud<C extends CloudArrays>(cloud: C, neighbours: number, settings: CloudCheckSettings = { outliers: true }): CloudCheckResult<C> {
   const input = cloud.positions.length / 3;
   const repairs: string[] = [];
   const finite = finitePoints(cloud.positions);
@@ -62,14 +71,24 @@ export function checkCloud<C extends CloudArrays>(cloud: C, neighbours: number):
     repairs.push(`merged ${count(welded.count, 'duplicate point', 'duplicate points')} (closer than ${DUPLICATE_TOLERANCE.toExponential()} of the bounding-box diagonal)${normals ? ', averaging their normals' : ''}`);
   }
 
-  // Each point kept is the first of its duplicates (weld keeps the lowest index).
+  // Each point kept is the first of its duplicates (weld keeps the lowest index), unless it stands alone.
+  const firsts: number[] = [];
+  for (let i = 0; i < input; i++) if (finite.used[i] && welded.to[i] === i) firsts.push(i);
+  const stray = settings.outliers ? findOutliers(gatherPoints(cloud.positions, firsts)) : new Uint8Array(firsts.length);
+  const strayCount = stray.reduce((sum, s) => sum + s, 0);
+  if (strayCount > 0) {
+    repairs.push(
+      `removed ${count(strayCount, 'stray point', 'stray points')} (each more than ${OUTLIER_RATIO} times as far from its nearest point as the points around it are from their ${OUTLIER_NEIGHBOURS}th nearest)`,
+    );
+  }
   const pointMap = new Int32Array(input).fill(-1);
   const keptPoints: number[] = [];
-  for (let i = 0; i < input; i++) if (finite.used[i] && welded.to[i] === i) pointMap[i] = keptPoints.push(i) - 1;
+  firsts.forEach((i, j) => {
+    if (!stray[j]) pointMap[i] = keptPoints.push(i) - 1;
+  });
   for (let i = 0; i < input; i++) if (finite.used[i]) pointMap[i] = pointMap[welded.to[i]];
   const kept = keptPoints.length;
-  const positions = kept === input ? cloud.positions : new Float64Array(3 * kept);
-  if (kept < input) keptPoints.forEach((i, p) => positions.set(cloud.positions.subarray(3 * i, 3 * i + 3), 3 * p));
+  const positions = kept === input ? cloud.positions : gatherPoints(cloud.positions, keptPoints);
   if (normals) {
     const merged = mergeNormals(normals, pointMap, keptPoints);
     normals = merged.normals;
@@ -86,6 +105,13 @@ export function checkCloud<C extends CloudArrays>(cloud: C, neighbours: number):
 
   if (repairs.length === 0) return { cloud, repairs, pointMap };
   return { cloud: { ...cloud, positions, normals }, repairs, pointMap };
+}
+
+/** The positions of the given points, in that order. */
+function gatherPoints(positions: Float64Array, points: number[]): Float64Array {
+  const out = new Float64Array(3 * points.length);
+  points.forEach((i, p) => out.set(positions.subarray(3 * i, 3 * i + 3), 3 * p));
+  return out;
 }
 
 /** Which points have three finite coordinates, and how many. */

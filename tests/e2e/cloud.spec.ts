@@ -86,6 +86,14 @@ test('a dropped point cloud runs to a skeleton with its cycle, on two workers', 
   expect((await canvasStats(page)).hueBins, 'the points in the error colormap').toBeGreaterThan(skeletonView.hueBins);
 });
 
+test('a cloud with stray points opens without them, and the notes say how many went', async ({ page }) => {
+  // bob_strays.ply: bob_subsample's 1948 points and 24 strays around them (tests/fixtures/clouds/make.ts).
+  await openPage(page);
+  await drop(page, 'bob_strays.ply', readFileSync(fixture('clouds', 'bob_strays.ply')));
+  await expect(page.getByTestId('facts-vertices')).toHaveText('1948 points', { timeout: 30_000 });
+  await expect(page.getByTestId('warnings')).toContainText('Repaired: removed 24 stray points');
+});
+
 test('a click on a point shows stage 1 on the cloud: the distance, cut locus, paths, the shortening steps and the loop', async ({ page }) => {
   await openPage(page);
   await page.getByTestId('file-input').setInputFiles({ name: 'bob_subsample.ply', mimeType: 'application/octet-stream', buffer: readFileSync(fixture('clouds', 'bob_subsample.ply')) });
@@ -138,11 +146,14 @@ function sphereXyz(n: number): Buffer {
 }
 
 test('a cloud above the point limit is computed on a subsample, said in the notes, and on all its points when asked', async ({ page }) => {
-  // 120,000 points: above POINT_LIMIT (100,000), subsampled to at most 50,000.
+  // 120,000 points: above POINT_LIMIT (100,000), subsampled to at most 50,000; three of them strays far
+  // from the sphere, removed from the points computed on either way.
   const n = 120_000;
+  const strays = Buffer.from('\n5 5 5\n-5 4 3\n0 -6 2');
   await openPage(page);
-  await page.getByTestId('file-input').setInputFiles({ name: 'sphere.xyz', mimeType: 'text/plain', buffer: sphereXyz(n) });
+  await page.getByTestId('file-input').setInputFiles({ name: 'sphere.xyz', mimeType: 'text/plain', buffer: Buffer.concat([sphereXyz(n - 3), strays]) });
   await expect(page.getByTestId('warnings')).toContainText(`Repaired: subsampled from ${n} to`, { timeout: 60_000 });
+  await expect(page.getByTestId('warnings')).toContainText('removed 3 stray points');
   await waitForState(page, 'ready');
   const points = Number((await page.getByTestId('facts-vertices').textContent())?.match(/^\d+/)?.[0]);
   expect(points).toBeGreaterThan(45_000);
@@ -154,11 +165,12 @@ test('a cloud above the point limit is computed on a subsample, said in the note
   // Drawn: the subsample and points left out of it, 100,000 in all on a software renderer (these tests'), all on a GPU.
   expect(await page.evaluate(() => window.cscd!.cloudPoints())).toEqual({ drawn: 100_000, computedOn: points });
   await page.getByTestId('limit-full').click();
-  await expect(page.getByTestId('facts-vertices')).toHaveText(`${n} points`, { timeout: 60_000 });
+  await expect(page.getByTestId('facts-vertices')).toHaveText(`${n - 3} points`, { timeout: 60_000 });
   await waitForState(page, 'ready');
-  expect(await page.evaluate(() => window.cscd!.cloudPoints())).toEqual({ drawn: n, computedOn: n });
+  expect(await page.evaluate(() => window.cscd!.cloudPoints())).toEqual({ drawn: n - 3, computedOn: n - 3 });
   await expect(page.getByTestId('limit-offer')).toBeHidden();
   await expect(page.getByTestId('warnings')).not.toContainText('subsampled');
+  await expect(page.getByTestId('warnings')).toContainText('removed 3 stray points');
 });
 
 test('a cloud whose points all would not fit in a core is not offered whole, and is drawn with points left out of its subsample', async ({ page }) => {

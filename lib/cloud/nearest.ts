@@ -1,7 +1,7 @@
 /**
  * The k nearest other points of every point of a cloud, on a k-d tree (balanced, implicit: the median
- * of each range splits it along the range's widest axis). Pure TypeScript on typed arrays; the core has
- * its own search (geometry-central's), but the point-cloud checks run before the core is loaded.
+ * of each range splits it across the widest axis of the range's box). Pure TypeScript on typed arrays:
+ * the core has its own search (geometry-central's), but the point-cloud checks run before it is loaded.
  */
 
 /** Points per leaf: below this a range is scanned point by point. */

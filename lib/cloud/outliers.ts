@@ -6,14 +6,16 @@
  * A point is an outlier when its nearest other point is more than OUTLIER_RATIO times as far as the
  * narrowest neighbourhood around it: the distance to the OUTLIER_NEIGHBOURS-th nearest point, the
  * neighbourhood's width, taken at the point's OUTLIER_NEIGHBOURS nearest points, and the smallest of
- * those. Relative, so a cloud's sparse parts are no outliers (the width there is wide too), and a point
- * among others of its kind (a scan line across a twig) has a near neighbour: only points that stand
- * alone go (a pair of strays within 3 widths of each other stays, as the fragments of a twig that a tree
- * scan hit with two or three beams do). Measured (docs/pointcloud.md, "Stray points"): on every shared
- * cloud and the clouds from other meshes, clean, noisy up to 3% of the diagonal, non-uniform and the two
- * tree scans, the ratio stays below 2.4, so no point of theirs goes; of points strewn over the bounding
- * box, those farther from the surface than a few spacings go, all but some lying nearer each other.
+ * those. Relative, so a cloud's sparse parts are no outliers (the width there is wide too). So are two
+ * or three points that stand apart together, each within that reach of another of them but more than a
+ * width from it: strays that happen to lie near each other. Closer, they are a fragment sampled as
+ * densely as the surface (a twig a tree scan hit with two or three beams) and stay. Measured
+ * (docs/pointcloud.md, "Stray points"): on every shared cloud and the clouds from other meshes, clean,
+ * noisy up to 3% of the diagonal, non-uniform and the two tree scans, no point goes (the ratio stays below
+ * 2.4, the tree scans' fragments are 0.14-0.71 widths across); of points strewn over the bounding box,
+ * those farther from the surface than a few spacings go.
  */
+import { UnionFind } from '../graph/union-find.ts';
 import { nearestNeighbours } from './nearest.ts';
 
 /** The neighbourhood whose width is compared (its k). */
@@ -22,6 +24,8 @@ export const OUTLIER_NEIGHBOURS = 16;
 export const OUTLIER_RATIO = 3;
 /** Rounds at most: each one costs a neighbour search over the cloud. */
 const MAX_ROUNDS = 8;
+/** The largest group of points that stand alone together and are removed, if they lie apart. */
+const MAX_GROUP = 3;
 
 /**
  * Which points of a cloud are outliers (1). Rounds of the rule above on the points left, until one finds
@@ -43,15 +47,45 @@ export function findOutliers(positions: Float64Array): Uint8Array {
   return outlier;
 }
 
-/** One round: the points whose nearest neighbour is more than OUTLIER_RATIO narrowest widths away. */
+/**
+ * One round: the points that stand alone, and the groups of up to MAX_GROUP that stand alone together.
+ * A point stands alone when its nearest is more than OUTLIER_RATIO times the narrowest width around it
+ * away. The others are joined to those of their nearest within that reach (points standing alone left
+ * out); a group of at most MAX_GROUP joined only among themselves goes when each of its points is more
+ * than a width from its nearest: closer, it is a fragment sampled as densely as the surface.
+ */
 function standingAlone(positions: Float64Array): number[] {
   const n = positions.length / 3, k = OUTLIER_NEIGHBOURS;
   const { index, distance } = nearestNeighbours(positions, k);
+  const narrowest = new Float64Array(n).fill(Infinity);
+  for (let p = 0; p < n; p++) {
+    for (let j = 0; j < k; j++) narrowest[p] = Math.min(narrowest[p], distance[index[p * k + j] * k + k - 1]);
+  }
+  const alone = new Uint8Array(n);
+  for (let p = 0; p < n; p++) alone[p] = distance[p * k] > OUTLIER_RATIO * narrowest[p] ? 1 : 0;
+  const groups = new UnionFind(n);
+  for (let p = 0; p < n; p++) {
+    if (alone[p]) continue;
+    const reach = OUTLIER_RATIO * narrowest[p];
+    for (let j = 0; j < k && distance[p * k + j] <= reach; j++) {
+      const q = index[p * k + j];
+      if (!alone[q]) groups.union(p, q);
+    }
+  }
+  // Each group's first MAX_GROUP + 1 points: enough to tell a small group from the rest.
+  const members = new Map<number, number[]>();
   const found: number[] = [];
   for (let p = 0; p < n; p++) {
-    let narrowest = Infinity;
-    for (let j = 0; j < k; j++) narrowest = Math.min(narrowest, distance[index[p * k + j] * k + k - 1]);
-    if (distance[p * k] > OUTLIER_RATIO * narrowest) found.push(p);
+    if (alone[p]) {
+      found.push(p);
+      continue;
+    }
+    const root = groups.find(p), list = members.get(root);
+    if (!list) members.set(root, [p]);
+    else if (list.length <= MAX_GROUP) list.push(p);
+  }
+  for (const group of members.values()) {
+    if (group.length > 1 && group.length <= MAX_GROUP && group.every((p) => distance[p * k] > narrowest[p])) found.push(...group);
   }
   return found;
 }

@@ -78,7 +78,7 @@ export function checkCloud<C extends CloudArrays>(cloud: C, neighbours: number, 
   const strayCount = stray.reduce((sum, s) => sum + s, 0);
   if (strayCount > 0) {
     repairs.push(
-      `removed ${count(strayCount, 'stray point', 'stray points')} (each more than ${OUTLIER_RATIO} times as far from its nearest point as the points around it are from their ${OUTLIER_NEIGHBOURS}th nearest)`,
+      `removed ${count(strayCount, 'stray point', 'stray points')} (alone or in twos and threes, more than ${OUTLIER_RATIO} times as far from the other points as those are from their ${OUTLIER_NEIGHBOURS}th nearest)`,
     );
   }
   const pointMap = new Int32Array(input).fill(-1);

@@ -1,7 +1,7 @@
 // Stray points of a scan (lib/cloud/outliers.ts, step 4 of lib/io/cloud-check.ts) and the k-d tree
 // they are found with (lib/cloud/nearest.ts): no point of a real cloud goes, the lone strays of
-// bob_strays.ply all go, and with them gone its skeleton is bob's again; a pair of strays stays; a
-// mesh's vertices keep theirs.
+// bob_strays.ply all go, and with them gone its skeleton is bob's again; pairs of strays go, fragments
+// as dense as the surface stay; a mesh's vertices keep theirs.
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
@@ -51,19 +51,20 @@ describe('stray points', () => {
     const bob = readCloudFile(fixture('clouds', 'bob_subsample.ply'));
     const { cloud, repairs, pointMap } = checkCloud(strays, 30);
     expect(repairs).toEqual([
-      `removed ${STRAYS} stray points (each more than 3 times as far from its nearest point as the points around it are from their 16th nearest)`,
+      `removed ${STRAYS} stray points (alone or in twos and threes, more than 3 times as far from the other points as those are from their 16th nearest)`,
     ]);
     expect(Array.from(pointMap)).toEqual([...Array.from({ length: BOB_POINTS }, (_, i) => i), ...Array<number>(STRAYS).fill(-1)]);
     expect(Array.from(cloud.positions)).toEqual(Array.from(bob.positions));
   });
 
-  it('keeps two strays nearer each other than 3 widths, as it keeps a twig hit by two beams', () => {
-    // bob_subsample's neighbourhoods are about 0.12 wide (16th nearest); two points 0.2 apart and a
-    // third on its own, all 2.5 diagonals from bob.
+  it('removes a pair standing apart together, but not one as close as the surface\'s points (a fragment)', () => {
+    // bob_subsample's neighbourhoods are 0.10-0.14 wide (16th nearest). Far from bob: two points 0.05
+    // apart (closer than a width: a fragment sampled like the surface, as a twig hit by two beams), two
+    // 0.22 apart (within 3 widths of each other, more than one apart: strays), and one alone.
     const bob = readCloudFile(fixture('clouds', 'bob_subsample.ply')).positions;
-    const positions = Float64Array.from([...Array.from(bob), 6, 0, 0, 6, 0.2, 0, 0, 6, 0]);
+    const positions = Float64Array.from([...Array.from(bob), 6, 0, 0, 6, 0.05, 0, 0, 6, 0, 0, 6.22, 0, 0, 0, 6]);
     const outliers = findOutliers(positions);
-    expect(Array.from(outliers.subarray(BOB_POINTS))).toEqual([0, 0, 1]);
+    expect(Array.from(outliers.subarray(BOB_POINTS))).toEqual([0, 0, 1, 1, 1]);
     expect(outliers.subarray(0, BOB_POINTS).every((x) => x === 0)).toBe(true);
   });
 });

@@ -39,8 +39,8 @@ export function nearestNeighbours(positions: Float64Array, k: number): Neighbour
   for (let t = 0; t < n; t++) {
     const p = order[t], px = xyz[3 * t], py = xyz[3 * t + 1], pz = xyz[3 * t + 2];
     heap.size = 0;
-    let top = 0;
-    rangeLo[0] = 0, rangeHi[0] = n, rangeGap[0] = 0, top = 1;
+    rangeLo[0] = 0, rangeHi[0] = n, rangeGap[0] = 0;
+    let top = 1;
     while (top > 0) {
       top--;
       const lo = rangeLo[top], hi = rangeHi[top];

@@ -1,7 +1,8 @@
 /**
  * Stray points of a scan (outliers): points that lie apart from the sampled surface, which CSCD-PC would
  * otherwise join to it by long edges of its neighbourhood graph and tufted triangulation (shortcuts for
- * the geodesic distances: bob_clean with 100 points strewn over its bounding box got 2.3 times its error).
+ * the geodesic distances: 100 points strewn over the bounding box cost bob_clean 1.3-2 times its error,
+ * deer_noise1.0 2-7 times and three stray cycles; docs/pointcloud.md, "Stray points").
  *
  * A point is an outlier when its nearest other point is more than OUTLIER_RATIO times as far as the
  * narrowest neighbourhood around it: the distance to the OUTLIER_NEIGHBOURS-th nearest point, the

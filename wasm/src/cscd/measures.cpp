@@ -18,6 +18,12 @@ Vector3 loopCentroid(const std::vector<Vector3>& loop, bool closed) {
   return total > 0 ? sum / total : (loop.empty() ? sum : loop.front());
 }
 
+double loopLength(const std::vector<Vector3>& loop) {
+  double length = 0;
+  for (size_t i = 0; i < loop.size(); i++) length += norm(loop[(i + 1) % loop.size()] - loop[i]);
+  return length;
+}
+
 Vector3 loopNormal(const std::vector<Vector3>& loop) {
   Vector3 c = loopCentroid(loop, true), area{0, 0, 0};
   for (size_t i = 0; i < loop.size(); i++) area += cross(loop[i] - c, loop[(i + 1) % loop.size()] - c) / 2;

@@ -10,6 +10,9 @@ namespace cscd {
 // Length-weighted centroid of a polyline; a closed one has its last point joined to the first.
 geometrycentral::Vector3 loopCentroid(const std::vector<geometrycentral::Vector3>& loop, bool closed);
 
+// Length of a closed loop (its last point joined to the first).
+double loopLength(const std::vector<geometrycentral::Vector3>& loop);
+
 // Unit normal of the loop's vector area (the direction it winds around); zero for a degenerate loop.
 geometrycentral::Vector3 loopNormal(const std::vector<geometrycentral::Vector3>& loop);
 

@@ -115,9 +115,7 @@ bool ExteriorGrid::meetsShell(const Vector3& p, const Vector3& d, double reach) 
 
 bool ExteriorGrid::enclosesCrossSection(const std::vector<Vector3>& loop) const {
   if (loop.size() < 3) return false;
-  double length = 0;
-  for (size_t i = 0; i < loop.size(); i++) length += norm(loop[(i + 1) % loop.size()] - loop[i]);
-  const double radius = length / (2 * M_PI);
+  const double radius = loopLength(loop) / (2 * M_PI);
   const Vector3 centre = loopCentroid(loop, true), normal = loopNormal(loop);
   if (!(radius > 0) || !isfinite(centre) || norm(normal) == 0) return false;
   for (const Vector3& p : loop) {

@@ -66,12 +66,6 @@ constexpr double kMaxPlaneTilt = 0.5;
 
 using Polyline = std::vector<Vector3>;
 
-double loopLength(const Polyline& loop) {
-  double length = 0;
-  for (size_t i = 0; i < loop.size(); i++) length += norm(loop[(i + 1) % loop.size()] - loop[i]);
-  return length;
-}
-
 // Projects a loop's points on the cloud's surface. Each point keeps its candidate neighbours between
 // steps (it moves at most kMaxMove per step): the projections are those without the caches, found without
 // most of the kd-tree queries. On a clean cloud the points go on the blended fits of their nearest points

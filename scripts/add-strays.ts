@@ -35,7 +35,13 @@ if (cloud.kind !== 'cloud') throw new Error(`${cloudFile} is a mesh, not a point
 const p = cloud.positions, n = p.length / 3;
 const points = Array.from({ length: n }, (_, i) => [p[3 * i], p[3 * i + 1], p[3 * i + 2]]);
 
-const low = [0, 1, 2].map((k) => Math.min(...points.map((q) => q[k]))), high = [0, 1, 2].map((k) => Math.max(...points.map((q) => q[k])));
+const low = [Infinity, Infinity, Infinity], high = [-Infinity, -Infinity, -Infinity];
+for (const q of points) {
+  for (let k = 0; k < 3; k++) {
+    low[k] = Math.min(low[k], q[k]);
+    high[k] = Math.max(high[k], q[k]);
+  }
+}
 const sigma = NEAR_DEVIATION * boundingBoxDiagonal(p);
 const next = random(seed);
 for (let j = 0; j < count; j++) {

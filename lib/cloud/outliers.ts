@@ -38,8 +38,11 @@ export function findOutliers(positions: Float64Array): Uint8Array {
   const outlier = new Uint8Array(n);
   let left = Int32Array.from({ length: n }, (_, i) => i);
   for (let round = 0; round < MAX_ROUNDS && left.length > OUTLIER_NEIGHBOURS; round++) {
-    const points = new Float64Array(3 * left.length);
-    left.forEach((p, j) => points.set(positions.subarray(3 * p, 3 * p + 3), 3 * j));
+    let points = positions;
+    if (left.length < n) {
+      points = new Float64Array(3 * left.length);
+      left.forEach((p, j) => points.set(positions.subarray(3 * p, 3 * p + 3), 3 * j));
+    }
     const found = standingAlone(points);
     if (found.length === 0) break;
     for (const j of found) outlier[left[j]] = 1;

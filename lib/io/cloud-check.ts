@@ -74,7 +74,9 @@ export function checkCloud<C extends CloudArrays>(cloud: C, neighbours: number, 
   // Each point kept is the first of its duplicates (weld keeps the lowest index), unless it stands alone.
   const firsts: number[] = [];
   for (let i = 0; i < input; i++) if (finite.used[i] && welded.to[i] === i) firsts.push(i);
-  const stray = settings.outliers ? findOutliers(gatherPoints(cloud.positions, firsts)) : new Uint8Array(firsts.length);
+  const stray = settings.outliers
+    ? findOutliers(firsts.length === input ? cloud.positions : gatherPoints(cloud.positions, firsts))
+    : new Uint8Array(firsts.length);
   const strayCount = stray.reduce((sum, s) => sum + s, 0);
   if (strayCount > 0) {
     repairs.push(

@@ -3,6 +3,7 @@
 // clouds keep the graph they had. Farther targets where the nearest loops enclose nothing. Orientation
 // patches not turned on noise. Regions that tile a noisy surface joined by a tree, not one star. Loops
 // round a tube the scan left open are cross-sections, though the exterior flood reaches their centroids.
+// Nodes of regions of sparse twigs among their twigs.
 import path from 'node:path';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { subsampleCloud } from '../../lib/cloud/subsample.ts';
@@ -208,6 +209,36 @@ describe('noisy clouds', () => {
       expect(trunk.inside(new Float64Array(centroidOf(stages.loop)))[0]).toBe(0);
     } finally {
       trunk.dispose();
+    }
+  });
+
+  it('puts each node among the points it stands for: regions of sparse twigs get nodes on the twigs', () => {
+    // Two whorls of tree_woodske_HS's sparse twigs round its trunk: five regions of twigs had their nodes on
+    // the trunk or in the air, 0.5-2.6 units (20-100 spacings) from every point they held, which a detached
+    // node now moves to (a leaf) or sprouts a leaf at (docs/skeleton.md, "Detached nodes").
+    const shape = readCloud('tree_hs_whorls.ply');
+    const whorls = core.openCloud(shape);
+    try {
+      const { nodes, vertexToNode } = whorls.skeleton({ n: 40, seed: 1 });
+      const points = Array.from({ length: shape.positions.length / 3 }, (_, i) => [0, 1, 2].map((k) => shape.positions[3 * i + k]));
+      const owned: number[][][] = Array.from({ length: nodes.length / 3 }, () => []);
+      points.forEach((p, i) => owned[vertexToNode[i]].push(p));
+      const distance = (a: number[], b: number[]) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+      const apart: number[] = [];
+      owned.forEach((own, node) => {
+        if (own.length < 2) return;
+        const at = [0, 1, 2].map((k) => nodes[3 * node + k]);
+        const mean = [0, 1, 2].map((k) => own.reduce((sum, p) => sum + p[k], 0) / own.length);
+        const spread = Math.sqrt(own.reduce((sum, p) => sum + distance(p, mean) ** 2, 0) / own.length);
+        const nearestOwn = Math.min(...own.map((p) => distance(p, at)));
+        const nearestAny = Math.min(...points.map((p) => distance(p, at)));
+        // Apart: farther from all its points than twice their spread (a ring round its node is within one),
+        // and three times as far as from the cloud (a node deep in the trunk owning a patch of its surface is not).
+        if (nearestOwn > 2 * spread && nearestOwn > 3 * nearestAny) apart.push(node);
+      });
+      expect(apart).toEqual([]);
+    } finally {
+      whorls.dispose();
     }
   });
 

@@ -30,6 +30,11 @@ constexpr size_t kFitElements = 8;
 constexpr int kFitIterations = 50;
 constexpr int kFitRounds = 2;
 constexpr double kBranchNodeFit = 0.5;
+// A node farther from every element it owns than this many times their spread about their centroid
+// stands apart from them (on a ring of elements round a node the ratio is at most 1); whether the way
+// to them leaves the shape is asked at this many points less one, evenly along it.
+constexpr double kDetached = 2.0;
+constexpr int kDetachedProbes = 8;
 // A loop is 2 pi band widths long (kBandWidth = 1): a region with less area than that many band widths
 // times the element spacing does not hold a strip of elements along its loop.
 constexpr double kIslandStrip = M_PI;
@@ -231,6 +236,83 @@ void dropEmptyLeaves(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement)
   for (uint32_t& node : nodeOfElement) node = index[node];
 }
 
+// The elements each node owns, and per node whether all of them lie in solid parts.
+struct OwnedElements {
+  std::vector<std::vector<uint32_t>> of;
+  std::vector<char> solid;
+};
+
+OwnedElements ownedElements(size_t nodeCount, const std::vector<uint32_t>& nodeOfElement,
+                            const std::function<bool(uint32_t)>& solidElement) {
+  OwnedElements owned{std::vector<std::vector<uint32_t>>(nodeCount), std::vector<char>(nodeCount, 1)};
+  for (uint32_t v = 0; v < nodeOfElement.size(); v++) {
+    owned.of[nodeOfElement[v]].push_back(v);
+    if (!solidElement(v)) owned.solid[nodeOfElement[v]] = 0;
+  }
+  return owned;
+}
+
+// The weighted mean of elements and their total weight (the mean is meaningless where that is not positive).
+std::pair<Vector3, double> weightedMean(const std::vector<uint32_t>& elements, const Samples& samples) {
+  Vector3 mean{0, 0, 0};
+  double total = 0;
+  for (uint32_t v : elements) {
+    mean += samples.weights[v] * samples.positions[v];
+    total += samples.weights[v];
+  }
+  if (total > 0) mean /= total;
+  return {mean, total};
+}
+
+// A node of a solid part that stands apart from every element it owns, the way from it to them leaving
+// the shape, is given a node among them. The bands place a node at a region's centroid or its separator's
+// loop, and a branch node outside the shape at its heaviest neighbour; on a tree scan a region of sparse
+// twigs has its centroid in the air between them, and such nodes sat on the trunk or between branches,
+// 20-40 spacings from the twigs whose vertex map they held (docs/skeleton.md, "Detached nodes"). A leaf
+// moves to the element nearest its elements' centroid; a node with more edges stays where its edges
+// need it (on a trunk's chain) and a new leaf at that element takes its elements. A node round which
+// its elements lie (a cross-section, a cap) is never so far from them, nor a node deep in a body that
+// owns a patch of its surface: the way to them stays inside. Nor does a node leave the shape: where that
+// element is not inside (a mesh's vertex can fall either way), nothing is done. Whether any node changed.
+bool reattachDetachedNodes(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement, const Samples& samples,
+                           const std::function<bool(uint32_t)>& solidElement,
+                           const std::function<bool(const Vector3&)>& inside) {
+  const size_t nodeCount = graph.nodes.size();
+  const OwnedElements owned = ownedElements(nodeCount, nodeOfElement, solidElement);
+  std::vector<int> degree(nodeCount, 0);
+  for (const auto& [a, b] : graph.edges) degree[a]++, degree[b]++;
+  bool changed = false;
+  for (uint32_t node = 0; node < nodeCount; node++) {
+    if (!owned.solid[node] || owned.of[node].size() < 2) continue;
+    const auto [mean, total] = weightedMean(owned.of[node], samples);
+    if (!(total > 0)) continue;
+    double spread = 0, nearestToNode = INFINITY, nearestToMean = INFINITY;
+    uint32_t central = owned.of[node][0];
+    for (uint32_t v : owned.of[node]) {
+      const Vector3& p = samples.positions[v];
+      spread += samples.weights[v] * norm2(p - mean);
+      nearestToNode = std::min(nearestToNode, norm(p - graph.nodes[node]));
+      if (norm(p - mean) < nearestToMean) nearestToMean = norm(p - mean), central = v;
+    }
+    spread = std::sqrt(spread / total);
+    if (!(nearestToNode > kDetached * spread)) continue;
+    const Vector3 from = graph.nodes[node], to = samples.positions[central];
+    bool leaves = false;
+    for (int k = 1; k < kDetachedProbes && !leaves; k++) leaves = !inside(from + (to - from) * (double(k) / kDetachedProbes));
+    if (!leaves || !inside(to)) continue;
+    if (degree[node] <= 1) {
+      graph.nodes[node] = to;
+    } else {
+      const uint32_t leaf = uint32_t(graph.nodes.size());
+      graph.nodes.push_back(to);
+      graph.edges.push_back({node, leaf});
+      for (uint32_t v : owned.of[node]) nodeOfElement[v] = leaf;
+    }
+    changed = true;
+  }
+  return changed;
+}
+
 // Each node of a solid part moves to the centre of the sphere that best fits its elements (least
 // squares of their distances to it: Landau's fixed-point iteration, from where the node is). A band
 // piece's slice centroid lies off the axis wherever the piece is not a round cross-section (a bend, a
@@ -246,12 +328,7 @@ void centreOnElements(SkeletonGraph& graph, const std::vector<uint32_t>& nodeOfE
                       const std::function<bool(uint32_t)>& solidElement,
                       const std::function<bool(const Vector3&)>& inside) {
   const size_t nodeCount = graph.nodes.size();
-  std::vector<std::vector<uint32_t>> owned(nodeCount);
-  std::vector<char> solidNode(nodeCount, 1);
-  for (uint32_t v = 0; v < nodeOfElement.size(); v++) {
-    owned[nodeOfElement[v]].push_back(v);
-    if (!solidElement(v)) solidNode[nodeOfElement[v]] = 0;
-  }
+  const OwnedElements owned = ownedElements(nodeCount, nodeOfElement, solidElement);
   std::vector<int> degree(nodeCount, 0);
   std::vector<uint32_t> neighbour(nodeCount, 0);
   for (const auto& [a, b] : graph.edges) {
@@ -260,22 +337,16 @@ void centreOnElements(SkeletonGraph& graph, const std::vector<uint32_t>& nodeOfE
   }
   std::vector<Vector3> centred = graph.nodes;
   for (size_t node = 0; node < nodeCount; node++) {
-    if (!solidNode[node] || owned[node].size() < kFitElements) continue;
+    if (!owned.solid[node] || owned.of[node].size() < kFitElements) continue;
     const Vector3 at = graph.nodes[node];
-    Vector3 mean{0, 0, 0};
-    double total = 0;
-    for (uint32_t v : owned[node]) {
-      mean += samples.weights[v] * samples.positions[v];
-      total += samples.weights[v];
-    }
+    const auto [mean, total] = weightedMean(owned.of[node], samples);
     if (!(total > 0)) continue;
-    mean /= total;
     Vector3 centre = at;
     double fitted = 0;
     for (int k = 0; k < kFitIterations; k++) {
       Vector3 away{0, 0, 0};
       fitted = 0;
-      for (uint32_t v : owned[node]) {
+      for (uint32_t v : owned.of[node]) {
         const Vector3 d = centre - samples.positions[v];
         const double length = norm(d);
         fitted += samples.weights[v] * length;
@@ -633,13 +704,22 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   for (size_t v = 0; v < count; v++) nodeOfElement[v] = index[resolve(nodeOf[pieces.of[v]])];
   compactVertexMap(nodeOfElement, graph, samples);
   dropEmptyLeaves(graph, nodeOfElement);
+  const auto solidElement = [&](uint32_t v) { return bool(solid[label[v]]); };
+  // Before the centring and after it, as centred nodes own other elements.
+  const auto reattach = [&] {
+    if (!reattachDetachedNodes(graph, nodeOfElement, samples, solidElement, inside)) return;
+    compactVertexMap(nodeOfElement, graph, samples);
+    dropEmptyLeaves(graph, nodeOfElement);
+  };
+  reattach();
   // Centred nodes own other elements than before, whose sphere is centred again: twice (a third and
   // fourth round drifted, and lost as many meshes as they won).
   for (int round = 0; round < kFitRounds; round++) {
-    centreOnElements(graph, nodeOfElement, samples, [&](uint32_t v) { return bool(solid[label[v]]); }, inside);
+    centreOnElements(graph, nodeOfElement, samples, solidElement, inside);
     compactVertexMap(nodeOfElement, graph, samples);
     dropEmptyLeaves(graph, nodeOfElement);
   }
+  reattach();
   graph.weights.assign(graph.nodes.size(), 0);
   for (size_t v = 0; v < count; v++) graph.weights[nodeOfElement[v]] += samples.weights[v];
   graph.radii.clear();

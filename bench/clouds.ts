@@ -174,7 +174,7 @@ async function main(): Promise<void> {
   const pygel = shell(venvPython, ['-c', 'from importlib.metadata import version; print(version("PyGEL3D"))']);
   const cpuName = /model name\s*:\s*(.*)/.exec(readFileSync('/proc/cpuinfo', 'utf8'))?.[1] ?? 'unknown CPU';
   const machine = `Run on ${new Date().toISOString().replace(/\.\d+Z$/, 'Z')}, commit ${shell('git', ['rev-parse', '--short', 'HEAD'])}`
-    + `${shell('git', ['status', '--porcelain']) ? ' (with uncommitted changes in the work tree)' : ''}. Machine: ${os.cpus().length} cores, ${cpuName}; `
+    + `${shell('git', ['status', '--porcelain', '--untracked-files=no']) ? ' (with uncommitted changes in the work tree)' : ''}. Machine: ${os.cpus().length} cores, ${cpuName}; `
     + `Node ${process.version}, pygel3d ${pygel}; load average ${os.loadavg().map((x) => x.toFixed(2)).join(' ')} at the start.`;
 
   const core = await loadCoreNode();

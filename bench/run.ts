@@ -423,7 +423,7 @@ function describeMachine(methods: Method[]): string {
   const pygel = gel ? shell(venvPython, ['-c', 'from importlib.metadata import version; print(version("PyGEL3D"))']) : 'not used';
   const cgal = methods.includes('mcf') ? shell('dpkg-query', ['-W', '-f=${Version}', 'libcgal-dev']) : 'not used';
   const commit = shell('git', ['rev-parse', '--short', 'HEAD']);
-  const dirty = shell('git', ['status', '--porcelain']) !== '';
+  const dirty = shell('git', ['status', '--porcelain', '--untracked-files=no']) !== ''; // its own results file, claimed already, is untracked
   const load = os.loadavg().map((x) => x.toFixed(2)).join(' ');
   return `Run on ${new Date().toISOString().replace(/\.\d+Z$/, 'Z')}, commit ${commit}${dirty ? ' (with uncommitted changes in the work tree)' : ''}. `
       + `Machine: ${shell('nproc', [])} cores (nproc), ${cpu}; Node ${process.version}, Python ${python}, pygel3d ${pygel}, `

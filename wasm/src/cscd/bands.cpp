@@ -268,7 +268,7 @@ std::pair<Vector3, double> weightedMean(const std::vector<uint32_t>& elements, c
 // the shape, is given a node among them. The bands place a node at a region's centroid or its separator's
 // loop, and a branch node outside the shape at its heaviest neighbour; on a tree scan a region of sparse
 // twigs has its centroid in the air between them, and such nodes sat on the trunk or between branches,
-// 20-40 spacings from the twigs whose vertex map they held (docs/skeleton.md, "Detached nodes"). A leaf
+// 20-100 spacings from the twigs whose vertex map they held (docs/skeleton.md, "Detached nodes"). A leaf
 // moves to the element nearest its elements' centroid; a node with more edges stays where its edges
 // need it (on a trunk's chain) and a new leaf at that element takes its elements. A node round which
 // its elements lie (a cross-section, a cap) is never so far from them, nor a node deep in a body that

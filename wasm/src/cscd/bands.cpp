@@ -19,6 +19,10 @@ constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 // A leaf branch is a bump unless some part of it lies farther from its junction's node than this many
 // junction radii: one radius to the junction's surface, one more beyond it.
 constexpr double kBranchReach = 2.0;
+// A leaf that touches pieces other than its neighbour is a branch of its own only when it reaches this
+// many of the neighbour's radii from the neighbour's node: a radius past a bump's reach (at two radii an
+// ear of armadillo_gel_pts that grazed its head stayed a spur).
+constexpr double kTwigReach = 3.0;
 // A leaf's node moves to its tip only when that is worth a tenth of its radius.
 constexpr double kTipMove = 0.1;
 // A leaf piece that lies within this many radii of its neighbour's node is the neighbour's end cap.
@@ -587,11 +591,11 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   // along its separator (the watershed gave its separator's elements to a neighbour); a leaf piece that
   // lies outside the shape (a few elements at the very end of a thin tip: its neighbour moves into the
   // tip instead) or touches a piece other than its one neighbour (across a region border or a cut
-  // cycle); a leaf piece within kCapReach of its neighbour's radius from its node (the end cap of the
-  // neighbour's cross-section: on a blunt end whose separator is tilted, the last band is a crescent
-  // on one side, and as a leaf it bent the skeleton sideways there); a leaf branch of band pieces that
-  // spans less than one band (no cross-section of its own) or does not reach more than its junction's
-  // radius beyond the junction's surface (a bump).
+  // cycle), unless it is a twig that grazes another (below); a leaf piece within kCapReach of its
+  // neighbour's radius from its node (the end cap of the neighbour's cross-section: on a blunt end whose
+  // separator is tilted, the last band is a crescent on one side, and as a leaf it bent the skeleton
+  // sideways there); a leaf branch of band pieces that spans less than one band (no cross-section of its
+  // own) or does not reach more than its junction's radius beyond the junction's surface (a bump).
   auto touchesOther = [&](uint32_t node, uint32_t neighbour) {
     for (uint32_t p : piecesOf[node])
       for (const auto& [q, n] : contactsOf[p]) {
@@ -599,6 +603,27 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
         if (other != node && other != neighbour) return true;
       }
     return false;
+  };
+  // How far the elements of `node` reach from `from`.
+  auto reachOf = [&](uint32_t node, const Vector3& from) {
+    double reach = 0;
+    for (uint32_t p : piecesOf[node])
+      for (uint32_t v : pieces.list[p].elements) reach = std::max(reach, norm(samples.positions[v] - from));
+    return reach;
+  };
+  // A leaf that reaches kTwigReach of its neighbour's radii from the neighbour's node (at least as many
+  // element spacings: a slice of one or two elements has no radius) and holds to it by at least as many
+  // element edges as to the other pieces it touches is a branch that grazes another, as the twigs of a
+  // tree scan cross in its crown (docs/skeleton.md, "Grazing twigs").
+  auto twig = [&](uint32_t leaf, uint32_t neighbour) {
+    size_t held = 0, grazed = 0;
+    for (uint32_t p : piecesOf[leaf])
+      for (const auto& [q, n] : contactsOf[p]) {
+        const uint32_t other = resolve(nodeOf[q]);
+        if (other == neighbour) held += n;
+        else if (other != leaf) grazed += n;
+      }
+    return held >= grazed && reachOf(leaf, position[neighbour]) >= kTwigReach * std::max(radius[neighbour], spacing);
   };
   for (bool changed = true; changed;) {
     changed = false;
@@ -611,7 +636,7 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
         continue;
       }
       const bool outside = !regionNode && solid[pieces.list[piecesOf[leaf][0]].region] && !inside(position[leaf]);
-      if (outside || (!regionNode && touchesOther(leaf, next))) {
+      if (outside || (!regionNode && touchesOther(leaf, next) && !twig(leaf, next))) {
         changed = absorb(next, leaf) || changed;
         continue;
       }
@@ -621,10 +646,7 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
       // end of a tube, which stays (the hand cut open at the wrist: two loops near the rim).
       const bool ownBand = next >= oldNodes && pieces.list[piecesOf[next][0]].region == leaf;
       if (!isHub(next) && (!regionNode || ownBand)) {
-        double reach = 0;
-        for (uint32_t p : piecesOf[leaf])
-          for (uint32_t v : pieces.list[p].elements) reach = std::max(reach, norm(samples.positions[v] - position[next]));
-        if (reach < kCapReach * radius[next]) {
+        if (reachOf(leaf, position[next]) < kCapReach * radius[next]) {
           changed = absorb(next, leaf) || changed;
           continue;
         }

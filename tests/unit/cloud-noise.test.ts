@@ -246,9 +246,9 @@ describe('noisy clouds', () => {
   it('follows the twigs of a whole tree scan into its crown, where they graze each other', () => {
     // In the crown the twigs cross and touch: a leaf band piece that touched any piece but its neighbour
     // joined the neighbour, which then did the same, until one node on a branch stood for a whole stretch
-    // of crown (3.88% of the diagonal from the reference skeleton at this seed). A leaf that reaches three
-    // radii past its neighbour and holds to it by more element edges than to the rest now stays a branch
-    // (docs/skeleton.md, "Grazing twigs"): 1.97%.
+    // of crown (3.90% of the diagonal from these reference points at this seed). A leaf that reaches three
+    // of its neighbour's radii from the neighbour's node and holds to it by at least as many element edges
+    // as to the rest now stays a branch (docs/skeleton.md, "Grazing twigs"): 1.97%.
     const shape = readCloud('tree_woodske_HS.ply');
     const tree = core.openCloud(shape);
     try {

@@ -596,14 +596,6 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   // separator is tilted, the last band is a crescent on one side, and as a leaf it bent the skeleton
   // sideways there); a leaf branch of band pieces that spans less than one band (no cross-section of its
   // own) or does not reach more than its junction's radius beyond the junction's surface (a bump).
-  auto touchesOther = [&](uint32_t node, uint32_t neighbour) {
-    for (uint32_t p : piecesOf[node])
-      for (const auto& [q, n] : contactsOf[p]) {
-        uint32_t other = resolve(nodeOf[q]);
-        if (other != node && other != neighbour) return true;
-      }
-    return false;
-  };
   // How far the elements of `node` reach from `from`.
   auto reachOf = [&](uint32_t node, const Vector3& from) {
     double reach = 0;
@@ -611,11 +603,12 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
       for (uint32_t v : pieces.list[p].elements) reach = std::max(reach, norm(samples.positions[v] - from));
     return reach;
   };
-  // A leaf that reaches kTwigReach of its neighbour's radii from the neighbour's node (at least as many
-  // element spacings: a slice of one or two elements has no radius) and holds to it by at least as many
-  // element edges as to the other pieces it touches is a branch that grazes another, as the twigs of a
-  // tree scan cross in its crown (docs/skeleton.md, "Grazing twigs").
-  auto twig = [&](uint32_t leaf, uint32_t neighbour) {
+  // A leaf that touches pieces other than its neighbour is a sliver of a cross-section, unless it is a branch
+  // that grazes another, as the twigs of a tree scan cross in its crown (docs/skeleton.md, "Grazing twigs"): it
+  // reaches kTwigReach of its neighbour's radii from the neighbour's node (at least as many element
+  // spacings: a slice of one or two elements has no radius) and holds to the neighbour by at least as many
+  // element edges as to the other pieces it touches.
+  auto sliver = [&](uint32_t leaf, uint32_t neighbour) {
     size_t held = 0, grazed = 0;
     for (uint32_t p : piecesOf[leaf])
       for (const auto& [q, n] : contactsOf[p]) {
@@ -623,7 +616,8 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
         if (other == neighbour) held += n;
         else if (other != leaf) grazed += n;
       }
-    return held >= grazed && reachOf(leaf, position[neighbour]) >= kTwigReach * std::max(radius[neighbour], spacing);
+    return grazed > 0 &&
+           (held < grazed || reachOf(leaf, position[neighbour]) < kTwigReach * std::max(radius[neighbour], spacing));
   };
   for (bool changed = true; changed;) {
     changed = false;
@@ -636,7 +630,7 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
         continue;
       }
       const bool outside = !regionNode && solid[pieces.list[piecesOf[leaf][0]].region] && !inside(position[leaf]);
-      if (outside || (!regionNode && touchesOther(leaf, next) && !twig(leaf, next))) {
+      if (outside || (!regionNode && sliver(leaf, next))) {
         changed = absorb(next, leaf) || changed;
         continue;
       }

@@ -243,19 +243,28 @@ describe('noisy clouds', () => {
     }
   });
 
-  it('follows the twigs of a whole tree scan into its crown, where they graze each other', () => {
+  it('follows the twigs of a whole tree scan into its crown, where they graze each other and bend', () => {
     // In the crown the twigs cross and touch: a leaf band piece that touched any piece but its neighbour
     // joined the neighbour, which then did the same, until one node on a branch stood for a whole stretch
     // of crown (3.90% of the diagonal from these reference points at this seed). A leaf that reaches three
     // of its neighbour's radii from the neighbour's node and holds to it by at least as many element edges
-    // as to the rest now stays a branch (docs/skeleton.md, "Grazing twigs"): 1.97%.
+    // as to the rest now stays a branch (docs/skeleton.md, "Grazing twigs"): 1.97%; 1.90% with the twigs below.
     const shape = readCloud('tree_woodske_HS.ply');
     const tree = core.openCloud(shape);
     try {
       const skeleton = tree.skeleton({ n: 40, seed: 1 });
       expect(skeleton.stats.cycles).toBe(0);
       const reference = readCloud('tree_woodske_HS_reference.ply').positions;
-      expect(meanDistanceToSkeleton(reference, skeleton, boundingBoxDiagonal(shape.positions))).toBeLessThan(2.5);
+      const diagonal = boundingBoxDiagonal(shape.positions);
+      expect(meanDistanceToSkeleton(reference, skeleton, diagonal)).toBeLessThan(2.5);
+      // A twig that bends within its last band: the slice's centroid is in the air, and the leaf joined its
+      // neighbour, folding the twig back. As a twig by the rule above it now stands at its point nearest that
+      // centroid: its reference points (the 4 within 0.3 of its end) 4.88% of the diagonal away before, 0.40% now.
+      const end = [-2.9, 0.42, 5.95];
+      const twigEnd = Array.from({ length: reference.length / 3 }, (_, i) => [0, 1, 2].map((k) => reference[3 * i + k]))
+        .filter((p) => Math.hypot(p[0] - end[0], p[1] - end[1], p[2] - end[2]) < 0.3);
+      expect(twigEnd).toHaveLength(4);
+      expect(meanDistanceToSkeleton(twigEnd.flat(), skeleton, diagonal)).toBeLessThan(1.5);
     } finally {
       tree.dispose();
     }

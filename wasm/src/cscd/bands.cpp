@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -591,7 +592,7 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   // along its separator (the watershed gave its separator's elements to a neighbour); a leaf piece that
   // lies outside the shape (a few elements at the very end of a thin tip: its neighbour moves into the
   // tip instead) or touches a piece other than its one neighbour (across a region border or a cut
-  // cycle), unless it is a twig that grazes another (below); a leaf piece within kCapReach of its
+  // cycle), unless it is a twig (below); a leaf piece within kCapReach of its
   // neighbour's radius from its node (the end cap of the neighbour's cross-section: on a blunt end whose
   // separator is tilted, the last band is a crescent on one side, and as a leaf it bent the skeleton
   // sideways there); a leaf branch of band pieces that spans less than one band (no cross-section of its
@@ -603,21 +604,41 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
       for (uint32_t v : pieces.list[p].elements) reach = std::max(reach, norm(samples.positions[v] - from));
     return reach;
   };
-  // A leaf that touches pieces other than its neighbour is a sliver of a cross-section, unless it is a branch
-  // that grazes another, as the twigs of a tree scan cross in its crown (docs/skeleton.md, "Grazing twigs"): it
-  // reaches kTwigReach of its neighbour's radii from the neighbour's node (at least as many element
-  // spacings: a slice of one or two elements has no radius) and holds to the neighbour by at least as many
-  // element edges as to the other pieces it touches.
-  auto sliver = [&](uint32_t leaf, uint32_t neighbour) {
+  // A leaf that touches pieces other than its neighbour is a sliver of a cross-section, unless it is a twig,
+  // a branch that grazes another as the twigs of a tree scan cross in its crown (docs/skeleton.md, "Grazing
+  // twigs"): it reaches kTwigReach of its neighbour's radii from the neighbour's node (at least as many
+  // element spacings: a slice of one or two elements has no radius) and holds to the neighbour by at least
+  // as many element edges as to the other pieces it touches.
+  struct Contacts {
     size_t held = 0, grazed = 0;
+  };
+  auto contactsWith = [&](uint32_t leaf, uint32_t neighbour) {
+    Contacts tally;
     for (uint32_t p : piecesOf[leaf])
       for (const auto& [q, n] : contactsOf[p]) {
         const uint32_t other = resolve(nodeOf[q]);
-        if (other == neighbour) held += n;
-        else if (other != leaf) grazed += n;
+        if (other == neighbour) tally.held += n;
+        else if (other != leaf) tally.grazed += n;
       }
-    return grazed > 0 &&
-           (held < grazed || reachOf(leaf, position[neighbour]) < kTwigReach * std::max(radius[neighbour], spacing));
+    return tally;
+  };
+  auto twig = [&](uint32_t leaf, uint32_t neighbour, const Contacts& tally) {
+    return tally.held >= tally.grazed &&
+           reachOf(leaf, position[neighbour]) >= kTwigReach * std::max(radius[neighbour], spacing);
+  };
+  // A twig bent within its band has its slice centroid in the air: it stands at its element nearest the
+  // centroid instead, if that is inside.
+  auto insideElementNear = [&](uint32_t leaf) -> std::optional<Vector3> {
+    double nearest = INFINITY;
+    Vector3 at{0, 0, 0};
+    for (uint32_t p : piecesOf[leaf])
+      for (uint32_t v : pieces.list[p].elements)
+        if (norm(samples.positions[v] - position[leaf]) < nearest) {
+          nearest = norm(samples.positions[v] - position[leaf]);
+          at = samples.positions[v];
+        }
+    if (nearest < INFINITY && inside(at)) return at;
+    return std::nullopt;
   };
   for (bool changed = true; changed;) {
     changed = false;
@@ -629,10 +650,19 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
         changed = absorb(next, leaf) || changed;
         continue;
       }
-      const bool outside = !regionNode && solid[pieces.list[piecesOf[leaf][0]].region] && !inside(position[leaf]);
-      if (outside || (!regionNode && sliver(leaf, next))) {
-        changed = absorb(next, leaf) || changed;
-        continue;
+      if (!regionNode) {
+        const Contacts tally = contactsWith(leaf, next);
+        bool outside = solid[pieces.list[piecesOf[leaf][0]].region] && !inside(position[leaf]);
+        const bool isTwig = (outside || tally.grazed > 0) && twig(leaf, next, tally);
+        if (outside && isTwig)
+          if (const std::optional<Vector3> at = insideElementNear(leaf)) {
+            position[leaf] = *at;
+            outside = false;
+          }
+        if (outside || (tally.grazed > 0 && !isTwig)) {
+          changed = absorb(next, leaf) || changed;
+          continue;
+        }
       }
       // A region node is an end cap too when its neighbour is a band of its own region, which then
       // reaches past it (star8_coarse, rounds of 8: a loop tilted across a curling arm left its region

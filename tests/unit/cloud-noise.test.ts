@@ -265,6 +265,14 @@ describe('noisy clouds', () => {
         .filter((p) => Math.hypot(p[0] - end[0], p[1] - end[1], p[2] - end[2]) < 0.3);
       expect(twigEnd).toHaveLength(4);
       expect(meanDistanceToSkeleton(twigEnd.flat(), skeleton, diagonal)).toBeLessThan(1.5);
+      // A branch node that centreNodes put on its heaviest neighbour, and that neither moved from, is that
+      // neighbour: no edge of no length (docs/skeleton.md, "Coincident nodes"; one here before).
+      const edgeCount = skeleton.edges.length / 2;
+      const lengths = Array.from({ length: edgeCount }, (_, e) => {
+        const [a, b] = [skeleton.edges[2 * e], skeleton.edges[2 * e + 1]];
+        return Math.hypot(...[0, 1, 2].map((k) => skeleton.nodes[3 * a + k] - skeleton.nodes[3 * b + k]));
+      });
+      expect(lengths.filter((length) => length === 0)).toEqual([]);
     } finally {
       tree.dispose();
     }

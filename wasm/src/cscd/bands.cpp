@@ -196,6 +196,58 @@ void compactVertexMap(std::vector<uint32_t>& nodeOfElement, const SkeletonGraph&
     if (nodeOfElement[orphans[k]] == kNone) nodeOfElement[orphans[k]] = moved[k];
 }
 
+// A skeleton graph's edges as each node's neighbours, for joining and dropping nodes.
+using Adjacency = std::vector<std::set<uint32_t>>;
+
+Adjacency adjacencyOf(const SkeletonGraph& graph) {
+  Adjacency adj(graph.nodes.size());
+  for (const auto& [a, b] : graph.edges) {
+    adj[a].insert(uint32_t(b));
+    adj[b].insert(uint32_t(a));
+  }
+  return adj;
+}
+
+// `from` joins its neighbour `into`, which takes its other edges. Refused when the two are not neighbours
+// (joining them would close a cycle) or close a triangle (two of its edges would become one, losing a cycle).
+bool contract(Adjacency& adj, uint32_t into, uint32_t from) {
+  if (into == from || !adj[into].count(from)) return false;
+  for (uint32_t n : adj[from])
+    if (n != into && adj[into].count(n)) return false;
+  for (uint32_t n : adj[from]) {
+    adj[n].erase(from);
+    if (n != into) {
+      adj[n].insert(into);
+      adj[into].insert(n);
+    }
+  }
+  adj[from].clear();
+  return true;
+}
+
+// The graph keeps the nodes not merged into another, in their order, with the edges of `adj`; an element
+// of a merged node goes to the node it was merged into.
+void keepUnmerged(SkeletonGraph& graph, const Adjacency& adj, const std::vector<uint32_t>& mergedInto,
+                  std::vector<uint32_t>& nodeOfElement) {
+  const size_t nodeCount = graph.nodes.size();
+  std::vector<uint32_t> index(nodeCount, kNone);
+  std::vector<Vector3> kept;
+  for (uint32_t node = 0; node < nodeCount; node++)
+    if (mergedInto[node] == kNone) {
+      index[node] = uint32_t(kept.size());
+      kept.push_back(graph.nodes[node]);
+    }
+  graph.nodes = std::move(kept);
+  graph.edges.clear();
+  for (uint32_t a = 0; a < nodeCount; a++)
+    for (uint32_t b : adj[a])
+      if (a < b) graph.edges.push_back({index[a], index[b]});
+  for (uint32_t& node : nodeOfElement) {
+    while (mergedInto[node] != kNone) node = mergedInto[node];
+    node = index[node];
+  }
+}
+
 // A leaf that owns no element after the vertex map stands for no part of the shape: every element
 // lies nearer another node. It is the end of a hook (tree_coarse, rounds of 8: a packed loop hugging
 // a tip left its region node 1.2% of the diagonal back from the tip, beside the chain that reaches
@@ -205,12 +257,8 @@ void dropEmptyLeaves(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement)
   const size_t nodeCount = graph.nodes.size();
   std::vector<size_t> owned(nodeCount, 0);
   for (uint32_t node : nodeOfElement) owned[node]++;
-  std::vector<std::set<uint32_t>> adj(nodeCount);
-  for (const auto& [a, b] : graph.edges) {
-    adj[a].insert(uint32_t(b));
-    adj[b].insert(uint32_t(a));
-  }
-  std::vector<char> dropped(nodeCount, 0);
+  Adjacency adj = adjacencyOf(graph);
+  std::vector<uint32_t> droppedFor(nodeCount, kNone);
   std::vector<uint32_t> pending;
   for (uint32_t node = 0; node < nodeCount; node++)
     if (owned[node] == 0 && adj[node].size() == 1) pending.push_back(node);
@@ -218,27 +266,36 @@ void dropEmptyLeaves(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement)
   while (!pending.empty()) {
     const uint32_t leaf = pending.back();
     pending.pop_back();
-    if (dropped[leaf] || adj[leaf].size() != 1) continue;
+    if (droppedFor[leaf] != kNone || adj[leaf].size() != 1) continue;
     const uint32_t next = *adj[leaf].begin();
-    adj[next].erase(leaf);
-    adj[leaf].clear();
-    dropped[leaf] = any = true;
+    contract(adj, next, leaf);
+    droppedFor[leaf] = next;
+    any = true;
     if (owned[next] == 0 && adj[next].size() == 1) pending.push_back(next);
   }
-  if (!any) return;
-  std::vector<uint32_t> index(nodeCount, kNone);
-  std::vector<Vector3> kept;
-  for (uint32_t node = 0; node < nodeCount; node++)
-    if (!dropped[node]) {
-      index[node] = uint32_t(kept.size());
-      kept.push_back(graph.nodes[node]);
-    }
-  graph.nodes = std::move(kept);
-  graph.edges.clear();
-  for (uint32_t a = 0; a < nodeCount; a++)
-    for (uint32_t b : adj[a])
-      if (a < b) graph.edges.push_back({index[a], index[b]});
-  for (uint32_t& node : nodeOfElement) node = index[node];
+  if (any) keepUnmerged(graph, adj, droppedFor, nodeOfElement);
+}
+
+// Two nodes joined by an edge and at one place are one node: an edge of no length is no part of the
+// skeleton. They arise where centreNodes puts a branch node whose regions' centroid is outside the shape
+// on its heaviest neighbour and neither moves after (trees' junctions; 7 of 141 cloud skeletons had such
+// a pair). Not when the two share a neighbour: that would fold a cycle into a double edge.
+void mergeCoincidentNodes(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement) {
+  Adjacency adj = adjacencyOf(graph);
+  std::vector<uint32_t> mergedInto(graph.nodes.size(), kNone);
+  auto resolve = [&](uint32_t node) {
+    while (mergedInto[node] != kNone) node = mergedInto[node];
+    return node;
+  };
+  bool any = false;
+  for (const auto& edge : graph.edges) {
+    const uint32_t a = resolve(uint32_t(edge[0])), b = resolve(uint32_t(edge[1]));
+    const uint32_t keep = std::min(a, b), gone = std::max(a, b);
+    if (norm(graph.nodes[keep] - graph.nodes[gone]) > 0 || !contract(adj, keep, gone)) continue;
+    mergedInto[gone] = keep;
+    any = true;
+  }
+  if (any) keepUnmerged(graph, adj, mergedInto, nodeOfElement);
 }
 
 // The elements each node owns, and per node whether all of them lie in solid parts.
@@ -516,9 +573,9 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
     }
   }
 
-  // Graph operations: a node absorbs a neighbour (its pieces and its other edges), unless the two
-  // close a triangle, which absorbing would make one edge of two and so lose a cycle.
-  std::vector<std::set<uint32_t>> adj(nodeCount);
+  // Graph operations: a node absorbs a neighbour (its pieces and its other edges), unless `contract`
+  // refuses (the two close a triangle).
+  Adjacency adj(nodeCount);
   for (const auto& [a, b] : edges) {
     adj[a].insert(b);
     adj[b].insert(a);
@@ -529,20 +586,10 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
     return node;
   };
   auto absorb = [&](uint32_t into, uint32_t from) {
-    if (into == from || !adj[into].count(from)) return false; // joining two nodes apart would close a cycle
-    for (uint32_t n : adj[from])
-      if (n != into && adj[into].count(n)) return false;
+    if (!contract(adj, into, from)) return false;
     piecesOf[into].insert(piecesOf[into].end(), piecesOf[from].begin(), piecesOf[from].end());
     piecesOf[from].clear();
     mergedInto[from] = into;
-    for (uint32_t n : adj[from]) {
-      adj[n].erase(from);
-      if (n != into) {
-        adj[n].insert(into);
-        adj[into].insert(n);
-      }
-    }
-    adj[from].clear();
     return true;
   };
   auto isHub = [&](uint32_t node) { return node >= regions.count && node < oldNodes; };
@@ -766,6 +813,7 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
     dropEmptyLeaves(graph, nodeOfElement);
   }
   reattach();
+  mergeCoincidentNodes(graph, nodeOfElement);
   graph.weights.assign(graph.nodes.size(), 0);
   for (size_t v = 0; v < count; v++) graph.weights[nodeOfElement[v]] += samples.weights[v];
   graph.radii.clear();

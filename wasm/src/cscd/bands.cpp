@@ -278,8 +278,8 @@ void dropEmptyLeaves(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement)
 
 // Two nodes joined by an edge and at one place are one node: an edge of no length is no part of the
 // skeleton. They arise where centreNodes puts a branch node whose regions' centroid is outside the shape
-// on its heaviest neighbour and neither moves after (trees' junctions; 7 of 141 cloud skeletons had such
-// a pair). Not when the two share a neighbour: that would fold a cycle into a double edge.
+// on its heaviest neighbour and neither moves after (trees' junctions: 7 of the 141 skeletons measured on
+// 2026-12-06 had such a pair). Not when the two share a neighbour: that would fold a cycle into a double edge.
 void mergeCoincidentNodes(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement) {
   Adjacency adj = adjacencyOf(graph);
   std::vector<uint32_t> mergedInto(graph.nodes.size(), kNone);
@@ -639,10 +639,10 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   // along its separator (the watershed gave its separator's elements to a neighbour); a leaf piece that
   // lies outside the shape (a few elements at the very end of a thin tip: its neighbour moves into the
   // tip instead) or touches a piece other than its one neighbour (across a region border or a cut
-  // cycle), unless it is a twig (below); a leaf piece within kCapReach of its
-  // neighbour's radius from its node (the end cap of the neighbour's cross-section: on a blunt end whose
-  // separator is tilted, the last band is a crescent on one side, and as a leaf it bent the skeleton
-  // sideways there); a leaf branch of band pieces that spans less than one band (no cross-section of its
+  // cycle), unless it is a twig (below: outside, it stands at its element nearest its slice centroid);
+  // a leaf piece within kCapReach of its neighbour's radius from its node (the end cap of the neighbour's
+  // cross-section: on a blunt end whose separator is tilted, the last band is a crescent on one side, and
+  // as a leaf it bent the skeleton sideways there); a leaf branch of band pieces that spans less than one band (no cross-section of its
   // own) or does not reach more than its junction's radius beyond the junction's surface (a bump).
   // How far the elements of `node` reach from `from`.
   auto reachOf = [&](uint32_t node, const Vector3& from) {

@@ -225,6 +225,12 @@ bool contract(Adjacency& adj, uint32_t into, uint32_t from) {
   return true;
 }
 
+// The node that `node` was merged into, through any chain of merges (itself if it was not merged).
+uint32_t mergedRoot(const std::vector<uint32_t>& mergedInto, uint32_t node) {
+  while (mergedInto[node] != kNone) node = mergedInto[node];
+  return node;
+}
+
 // The graph keeps the nodes not merged into another, in their order, with the edges of `adj`; an element
 // of a merged node goes to the node it was merged into.
 void keepUnmerged(SkeletonGraph& graph, const Adjacency& adj, const std::vector<uint32_t>& mergedInto,
@@ -242,10 +248,7 @@ void keepUnmerged(SkeletonGraph& graph, const Adjacency& adj, const std::vector<
   for (uint32_t a = 0; a < nodeCount; a++)
     for (uint32_t b : adj[a])
       if (a < b) graph.edges.push_back({index[a], index[b]});
-  for (uint32_t& node : nodeOfElement) {
-    while (mergedInto[node] != kNone) node = mergedInto[node];
-    node = index[node];
-  }
+  for (uint32_t& node : nodeOfElement) node = index[mergedRoot(mergedInto, node)];
 }
 
 // A leaf that owns no element after the vertex map stands for no part of the shape: every element
@@ -283,13 +286,9 @@ void dropEmptyLeaves(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement)
 void mergeCoincidentNodes(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement) {
   Adjacency adj = adjacencyOf(graph);
   std::vector<uint32_t> mergedInto(graph.nodes.size(), kNone);
-  auto resolve = [&](uint32_t node) {
-    while (mergedInto[node] != kNone) node = mergedInto[node];
-    return node;
-  };
   bool any = false;
   for (const auto& edge : graph.edges) {
-    const uint32_t a = resolve(uint32_t(edge[0])), b = resolve(uint32_t(edge[1]));
+    const uint32_t a = mergedRoot(mergedInto, uint32_t(edge[0])), b = mergedRoot(mergedInto, uint32_t(edge[1]));
     const uint32_t keep = std::min(a, b), gone = std::max(a, b);
     if (norm(graph.nodes[keep] - graph.nodes[gone]) > 0 || !contract(adj, keep, gone)) continue;
     mergedInto[gone] = keep;
@@ -581,10 +580,7 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
     adj[b].insert(a);
   }
   std::vector<uint32_t> mergedInto(nodeCount, kNone);
-  auto resolve = [&](uint32_t node) {
-    while (mergedInto[node] != kNone) node = mergedInto[node];
-    return node;
-  };
+  auto resolve = [&](uint32_t node) { return mergedRoot(mergedInto, node); };
   auto absorb = [&](uint32_t into, uint32_t from) {
     if (!contract(adj, into, from)) return false;
     piecesOf[into].insert(piecesOf[into].end(), piecesOf[from].begin(), piecesOf[from].end());
@@ -642,8 +638,9 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   // cycle), unless it is a twig (below: outside, it stands at its element nearest its slice centroid);
   // a leaf piece within kCapReach of its neighbour's radius from its node (the end cap of the neighbour's
   // cross-section: on a blunt end whose separator is tilted, the last band is a crescent on one side, and
-  // as a leaf it bent the skeleton sideways there); a leaf branch of band pieces that spans less than one band (no cross-section of its
-  // own) or does not reach more than its junction's radius beyond the junction's surface (a bump).
+  // as a leaf it bent the skeleton sideways there); a leaf branch of band pieces that spans less than one
+  // band (no cross-section of its own) or does not reach more than its junction's radius beyond the
+  // junction's surface (a bump).
   // How far the elements of `node` reach from `from`.
   auto reachOf = [&](uint32_t node, const Vector3& from) {
     double reach = 0;
@@ -679,11 +676,13 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
     double nearest = INFINITY;
     Vector3 at{0, 0, 0};
     for (uint32_t p : piecesOf[leaf])
-      for (uint32_t v : pieces.list[p].elements)
-        if (norm(samples.positions[v] - position[leaf]) < nearest) {
-          nearest = norm(samples.positions[v] - position[leaf]);
+      for (uint32_t v : pieces.list[p].elements) {
+        const double d = norm(samples.positions[v] - position[leaf]);
+        if (d < nearest) {
+          nearest = d;
           at = samples.positions[v];
         }
+      }
     if (nearest < INFINITY && inside(at)) return at;
     return std::nullopt;
   };

@@ -72,6 +72,7 @@ void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::v
   if (cache->reach >= 0) {
     sortByDistance();
     held = std::sqrt(byDistance[k - 1].first) + norm(at - cache->centre) < cache->reach;
+    if (!held) held = refillAroundNearest(at, k, *cache);
   }
   if (!held) {
     const size_t count = std::min(kCandidateFactor * k, points.size());
@@ -85,6 +86,31 @@ void MlsSurface::kNearest(Vector3 at, size_t k, MlsNeighbourCache* cache, std::v
   }
   near.resize(k);
   for (size_t j = 0; j < k; j++) near[j] = byDistance[j].second;
+}
+
+// The candidates refilled from the nearest one's own neighbours (the point and its `neighbours` nearest
+// others, known since the cloud was opened) instead of from the kd-tree: any point left out lies at least
+// that list's reach from the point, so at least that less the query's offset from the query, and at least
+// as far as the first candidate left out. Exact, as the kd-tree's refill: false, and the cache as it was,
+// when the k nearest are not certainly among them (a query farther than the list reaches).
+bool MlsSurface::refillAroundNearest(Vector3 at, size_t k, MlsNeighbourCache& cache) const {
+  const size_t count = kCandidateFactor * k;
+  if (count >= neighbours + 1) return false;
+  const size_t nearest = cache.byDistance.front().second;
+  const uint32_t* others = nearestOthers.data() + nearest * neighbours;
+  std::vector<std::pair<double, size_t>>& listed = cache.refill;
+  listed.clear();
+  listed.push_back({norm2(points[nearest] - at), nearest});
+  for (size_t j = 0; j < neighbours; j++) listed.push_back({norm2(points[others[j]] - at), others[j]});
+  std::nth_element(listed.begin(), listed.begin() + count, listed.end());
+  const double reach = std::min(std::sqrt(listed[count].first),
+                                norm(points[others[neighbours - 1]] - points[nearest]) - norm(at - points[nearest]));
+  std::sort(listed.begin(), listed.begin() + count);
+  if (!(std::sqrt(listed[k - 1].first) < reach)) return false;
+  cache.centre = at;
+  cache.reach = reach;
+  cache.byDistance.assign(listed.begin(), listed.begin() + count);
+  return true;
 }
 
 MlsSurface::Fit MlsSurface::fit(Vector3 at, const std::vector<size_t>& near, bool tryQuadratic) const {

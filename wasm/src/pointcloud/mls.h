@@ -37,6 +37,7 @@ struct MlsNeighbourCache {
   double reach = -1; // none yet
   // The candidates with their squared distances from the last query, nearest first.
   std::vector<std::pair<double, size_t>> byDistance;
+  std::vector<std::pair<double, size_t>> refill; // scratch of MlsSurface::refillAroundNearest
 };
 
 // Whether a cloud is noisy, from its MLS surface: it is when the quadratic height is fitted at fewer than
@@ -83,6 +84,7 @@ private:
 
   // The k nearest points of `at` into `near`, the nearest first.
   void kNearest(geometrycentral::Vector3 at, size_t k, MlsNeighbourCache* cache, std::vector<size_t>& near) const;
+  bool refillAroundNearest(geometrycentral::Vector3 at, size_t k, MlsNeighbourCache& cache) const;
 
   std::vector<geometrycentral::Vector3> points;
   size_t neighbours;

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 using namespace geometrycentral;
 
@@ -98,9 +97,9 @@ Regions PointCloudRealization::regions(const Selection<Candidate>& packed) {
   // Regions touch where a triangle of the tufted triangulation (the points' local triangulations) has
   // points of both; only triangles whose three edges the neighbourhood graph kept, so that no region
   // touches another across a gap the graph does not bridge (two fingers side by side).
-  std::set<std::array<size_t, 2>> kept;
-  for (const auto& [a, b] : graph.edgeVertices) kept.insert({std::min(a, b), std::max(a, b)});
-  auto inGraph = [&](size_t a, size_t b) { return kept.count({std::min(a, b), std::max(a, b)}) > 0; };
+  auto inGraph = [&](size_t a, size_t b) {
+    return std::find(neighbours[a].begin(), neighbours[a].end(), uint32_t(b)) != neighbours[a].end();
+  };
   // Three regions meet where a tufted triangle has a point of each, whether or not the graph kept its
   // edges: the graph leaves holes at creases and in noise, where three regions met unseen and their
   // triangle stayed a cycle of the skeleton (horse_clean).

@@ -2,6 +2,7 @@
 import { readFile } from 'node:fs/promises';
 import { loadCoreNode } from '../lib/core/node.ts';
 import { AS_CLOUD, meshAsCloud } from '../lib/cloud/from-mesh.ts';
+import { scanLineWarning } from '../lib/cloud/scan-lines.ts';
 import type { Cloud, CloudArrays, CloudOptions, Core, MeshArrays, RefinedSurface } from '../lib/core/types.ts';
 import { checkCloud } from '../lib/io/cloud-check.ts';
 import { parseMesh, parseShape, type ParsedCloud, type ParsedMesh } from '../lib/io/index.ts';
@@ -184,11 +185,17 @@ export function decimateIfAsked<M extends MeshArrays>(mesh: M, values: OptionVal
   return { ...mesh, ...decimated, decimatedFrom: faces };
 }
 
-/** Opens a point cloud in the core, first warning on stderr when it is above the size limit (lib/mesh/limits.ts). */
+/**
+ * Opens a point cloud in the core, first warning on stderr when it is above the size limit (lib/mesh/limits.ts),
+ * then when its neighbourhoods are scan lines (lib/cloud/scan-lines.ts).
+ */
 export async function openCloud(cloud: CloudArrays, options: CloudOptions, file: string, io: CliIo): Promise<Cloud> {
   const warning = cloudSizeWarning(cloud.positions.length / 3);
   if (warning) io.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
-  return (await getCore()).openCloud(cloud, options);
+  const opened = (await getCore()).openCloud(cloud, options);
+  const scanLines = scanLineWarning(opened.facts);
+  if (scanLines) io.stderr.write(`cscd: warning: ${file}: ${scanLines}\n`);
+  return opened;
 }
 
 /**

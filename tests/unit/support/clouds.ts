@@ -94,3 +94,18 @@ export function revolutionPoints(n: number, radius: (z: number) => number, zMin:
   }
   return positions;
 }
+
+/**
+ * A tube of radius 1 along z scanned in `rings` rings `gap` apart, `around` points evenly round each (each
+ * ring turned a little from the last, as a turntable's scan is): with rings several times farther apart
+ * than the points round them, each point's nearest neighbours all lie in its own ring.
+ */
+export function ringScannedTube(rings: number, around: number, gap: number): Float64Array {
+  const positions = new Float64Array(3 * rings * around);
+  for (let ring = 0; ring < rings; ring++)
+    for (let i = 0; i < around; i++) {
+      const angle = (2 * Math.PI * (i + 0.37 * ring)) / around;
+      positions.set([Math.cos(angle), Math.sin(angle), ring * gap], 3 * (ring * around + i));
+    }
+  return positions;
+}

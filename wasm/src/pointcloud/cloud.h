@@ -36,6 +36,10 @@ struct CloudFacts {
   // lies flat (and on a noisy cloud), fewer where parts are thinner than it (pointcloud/flat_neighbours.h).
   double meanFlatNeighbours = 0;
   size_t components = 0; // of the tufted triangulation: heat flows within each one only
+  // Points whose k nearest others lie along a line (their spread across it under a tenth of their spread
+  // along it): a surface has its neighbours around each point, a cloud scanned in lines farther apart
+  // than its points along them has them in the line, and no surface to be found from them.
+  size_t linearNeighbourhoods = 0;
   std::array<double, 3> bboxMin{};
   std::array<double, 3> bboxMax{};
   double bboxDiagonal = 0;

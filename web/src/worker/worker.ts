@@ -27,6 +27,7 @@ import {
   type Surface,
 } from '../../../lib/core/types.ts';
 import { meshAsCloud } from '../../../lib/cloud/from-mesh.ts';
+import { scanLineWarning } from '../../../lib/cloud/scan-lines.ts';
 import { subsample, type Subsample } from '../../../lib/cloud/subsample.ts';
 import { checkCloud } from '../../../lib/io/cloud-check.ts';
 import { parseShape } from '../../../lib/io/index.ts';
@@ -240,6 +241,7 @@ async function openCloud(request: OpenRequest, input: CloudInput, started: numbe
   closeShapes();
   currentCloud = { cloud: core.openCloud(cloud, { neighbours }), arrays: cloud, neighbours, lastSource: null, lastSkeleton: null };
   const inspectMs = performance.now() - t;
+  const scanLines = scanLineWarning(currentCloud.cloud.facts);
   const positions = request.withArrays ? new Float32Array(cloud.positions) : new Float32Array(0);
   const drawnLeftOut = request.withArrays ? leftOut : new Int32Array(0);
   const leftOutPositions = new Float32Array(3 * drawnLeftOut.length);
@@ -254,7 +256,7 @@ async function openCloud(request: OpenRequest, input: CloudInput, started: numbe
       format: input.format,
       positions,
       facts: currentCloud.cloud.facts,
-      warnings: input.warnings,
+      warnings: scanLines ? [...input.warnings, scanLines] : input.warnings,
       repairs,
       leftOut: { positions: leftOutPositions, standIn: leftOutStandIn },
       subsampledFrom: subsampled ? points : null,

@@ -1,0 +1,77 @@
+// A cloud scanned in lines farther apart than its points along them (lib/cloud/scan-lines.ts): its points'
+// neighbourhoods are lines, the cloud falls apart into its lines, and it is said, with what to do; more
+// neighbours reach across the lines. The shared clouds (fixtures from them) have no such neighbourhoods.
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { scanLineWarning } from '../../lib/cloud/scan-lines.ts';
+import { loadCoreNode, type Core } from '../../lib/core/node.ts';
+import type { CloudFacts } from '../../lib/core/types.ts';
+import { fixture } from '../paths.ts';
+import { cscd } from './support/cli.ts';
+import { readCloudFile, ringScannedTube } from './support/clouds.ts';
+
+let core: Core;
+let folder: string;
+beforeAll(async () => {
+  core = await loadCoreNode();
+  folder = mkdtempSync(path.join(tmpdir(), 'cscd-scan-lines-'));
+});
+afterAll(() => rmSync(folder, { recursive: true, force: true }));
+
+function factsOf(positions: Float64Array, neighbours: number): CloudFacts {
+  const cloud = core.openCloud({ positions, normals: null }, { neighbours });
+  try {
+    return cloud.facts;
+  } finally {
+    cloud.dispose();
+  }
+}
+
+// 12 rings of 300 points, 0.36 apart: 0.021 between points round a ring, so 30 neighbours reach 0.31 along it.
+const tube = ringScannedTube(12, 300, 0.36);
+
+describe('clouds scanned in lines', () => {
+  it('counts every point of a ring-scanned tube as having its neighbours along a line, and says what to do', () => {
+    const facts = factsOf(tube, 30);
+    expect(facts.linearNeighbourhoods).toBe(3600);
+    expect(facts.components, 'the cloud falls apart into its rings').toBe(12);
+    expect(scanLineWarning(facts)).toBe(
+      '100% of the points have their 30 nearest neighbours along a line, not around them on a surface (a cloud scanned in lines '
+      + 'farther apart than its points along them?): the surface between the lines cannot be found from them; raise '
+      + 'neighbours (--neighbours K) until they reach across the lines',
+    );
+  });
+
+  it('no longer warns once the neighbours reach the next rings, and the tube is one piece', () => {
+    const facts = factsOf(tube, 100);
+    expect(facts.linearNeighbourhoods).toBe(0);
+    expect(facts.components).toBe(1);
+    expect(scanLineWarning(facts)).toBeNull();
+  });
+
+  it('finds none on clouds sampled from meshes, clean or noisy, and too few on a tree scan to warn', () => {
+    for (const [name, most] of [['hand_subsample.ply', 0], ['bob_noise_subsample.ply', 0], ['tree_woodske_HS.ply', 0.02 * 15129]] as const) {
+      const cloud = core.openCloud(readCloudFile(fixture('clouds', name)));
+      try {
+        expect(cloud.facts.linearNeighbourhoods, name).toBeLessThanOrEqual(most);
+        expect(scanLineWarning(cloud.facts), name).toBeNull();
+      } finally {
+        cloud.dispose();
+      }
+    }
+  });
+
+  it('is said on stderr by the CLI, which still prints the facts', async () => {
+    const file = path.join(folder, 'tube.xyz');
+    const rows: string[] = [];
+    for (let p = 0; p < tube.length / 3; p++) rows.push(Array.from(tube.subarray(3 * p, 3 * p + 3)).join(' '));
+    writeFileSync(file, rows.join('\n'));
+    const result = await cscd('info', file);
+    expect(result.status).toBe(0);
+    expect(result.stderr).toBe(`cscd: warning: ${file}: ${scanLineWarning(factsOf(tube, 30))}\n`);
+    expect(JSON.parse(result.stdout)).toMatchObject({ points: 3600, linearNeighbourhoods: 3600, components: 12 });
+    expect(await cscd('info', file, '--neighbours', '100')).toMatchObject({ status: 0, stderr: '' });
+  });
+});

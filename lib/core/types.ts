@@ -40,11 +40,12 @@ export interface CloudFacts extends BoundingBox {
   /** Connected components of the tufted triangulation built from the neighbours: distances stay within one. */
   components: number;
   /**
-   * Points whose `neighbours` nearest lie along a line (spread across it under a tenth of along it), not
-   * around them on a surface: a cloud scanned in lines farther apart than its points along them
-   * (lib/cloud/scan-lines.ts).
+   * The share of the points (every 16th) whose own surface fit (the point and its `neighbours` - 1 nearest,
+   * weighted as the MLS fits weigh them) has them along a line (spread across it under a tenth of along
+   * it), not around the point on a surface: a cloud scanned in lines farther apart than its points along
+   * them (lib/cloud/scan-lines.ts).
    */
-  linearNeighbourhoods: number;
+  lineLikeShare: number;
   /** Mean edge length of the tufted triangulation (its edges join neighbouring points): the counterpart of a mesh's meanEdgeLength. */
   meanSpacing: number;
   /** Whether the normals are the file's (else they are estimated from the neighbours, by PCA). */

@@ -1,6 +1,6 @@
 // A cloud scanned in lines farther apart than its points along them (lib/cloud/scan-lines.ts): its points'
-// neighbourhoods are lines, the cloud falls apart into its lines, and it is said, with what to do; more
-// neighbours reach across the lines. The shared clouds (fixtures from them) have no such neighbourhoods.
+// fits see lines (and farther apart, the cloud falls apart into its lines), and it is said, with what to
+// do; more neighbours reach across the lines. The shared clouds (fixtures from them) have no such neighbourhoods.
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
@@ -35,27 +35,36 @@ const tube = ringScannedTube(12, 300, 0.36);
 describe('clouds scanned in lines', () => {
   it('counts every point of a ring-scanned tube as having its neighbours along a line, and says what to do', () => {
     const facts = factsOf(tube, 30);
-    expect(facts.linearNeighbourhoods).toBe(3600);
+    expect(facts.lineLikeShare).toBe(1);
     expect(facts.components, 'the cloud falls apart into its rings').toBe(12);
     expect(scanLineWarning(facts)).toBe(
-      '100% of the points have their 30 nearest neighbours along a line, not around them on a surface (a cloud scanned in lines '
+      '100% of the points have their 30 nearest neighbours along a line as the surface fits weigh them, not around them (a cloud scanned in lines '
       + 'farther apart than its points along them?): the surface between the lines cannot be found from them; raise '
       + 'neighbours (--neighbours K) until they reach across the lines',
     );
   });
 
+  it('warns where the rings are near enough to join but every fit still sees one ring', () => {
+    // 0.3 apart: the 30 nearest reach the next ring, but it is the farthest, which the fits weigh 0.
+    const facts = factsOf(ringScannedTube(12, 300, 0.3), 30);
+    expect(facts.components).toBe(1);
+    expect(facts.lineLikeShare).toBe(1);
+    expect(scanLineWarning(facts)).not.toBeNull();
+    expect(factsOf(ringScannedTube(12, 300, 0.3), 60).lineLikeShare).toBe(0);
+  });
+
   it('no longer warns once the neighbours reach the next rings, and the tube is one piece', () => {
     const facts = factsOf(tube, 100);
-    expect(facts.linearNeighbourhoods).toBe(0);
+    expect(facts.lineLikeShare).toBe(0);
     expect(facts.components).toBe(1);
     expect(scanLineWarning(facts)).toBeNull();
   });
 
   it('finds none on clouds sampled from meshes, clean or noisy, and too few on a tree scan to warn', () => {
-    for (const [name, most] of [['hand_subsample.ply', 0], ['bob_noise_subsample.ply', 0], ['tree_woodske_HS.ply', 0.02 * 15129]] as const) {
+    for (const [name, most] of [['hand_subsample.ply', 0], ['bob_noise_subsample.ply', 0], ['tree_woodske_HS.ply', 0.01]] as const) {
       const cloud = core.openCloud(readCloudFile(fixture('clouds', name)));
       try {
-        expect(cloud.facts.linearNeighbourhoods, name).toBeLessThanOrEqual(most);
+        expect(cloud.facts.lineLikeShare, name).toBeLessThanOrEqual(most);
         expect(scanLineWarning(cloud.facts), name).toBeNull();
       } finally {
         cloud.dispose();
@@ -71,7 +80,7 @@ describe('clouds scanned in lines', () => {
     const result = await cscd('info', file);
     expect(result.status).toBe(0);
     expect(result.stderr).toBe(`cscd: warning: ${file}: ${scanLineWarning(factsOf(tube, 30))}\n`);
-    expect(JSON.parse(result.stdout)).toMatchObject({ points: 3600, linearNeighbourhoods: 3600, components: 12 });
+    expect(JSON.parse(result.stdout)).toMatchObject({ points: 3600, lineLikeShare: 1, components: 12 });
     expect(await cscd('info', file, '--neighbours', '100')).toMatchObject({ status: 0, stderr: '' });
   });
 });

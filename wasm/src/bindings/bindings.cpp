@@ -341,7 +341,7 @@ val toVal(const CloudFacts& f) {
   o.set("neighbours", f.neighbours);
   o.set("meanFlatNeighbours", f.meanFlatNeighbours);
   o.set("components", f.components);
-  o.set("linearNeighbourhoods", f.linearNeighbourhoods);
+  o.set("lineLikeShare", f.lineLikeShare);
   o.set("bboxMin", toArray(f.bboxMin));
   o.set("bboxMax", toArray(f.bboxMax));
   o.set("bboxDiagonal", f.bboxDiagonal);

@@ -15,8 +15,6 @@
 #include "geometrycentral/surface/tufted_laplacian.h"
 #include "geometrycentral/surface/vertex_position_geometry.h"
 
-#include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -50,27 +48,6 @@ void validateArrays(const CloudArrays& arrays, int neighbours) {
         << ": every point needs k others";
     throw InputError(msg.str());
   }
-}
-
-// Whether a point's neighbours lie along a line: the second axis of their spread (about their centroid)
-// under kLinearSpread of the first. The shared clouds have none such (trees 0.4-1.5% of their points,
-// twigs seen as lines); clouds scanned in rings several times farther apart than their points along a
-// ring have all (docs/pointcloud.md, "Scan lines").
-constexpr double kLinearSpread = 0.1;
-bool alongLine(const std::vector<Point>& near, const PointData<Vector3>& positions) {
-  Vector3 centroid{0, 0, 0};
-  for (Point q : near) centroid += positions[q];
-  centroid /= double(near.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (Point q : near) {
-    const Vector3 d = positions[q] - centroid;
-    const Eigen::Vector3d e{d.x, d.y, d.z};
-    covariance += e * e.transpose();
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-  eigen.computeDirect(covariance, Eigen::EigenvaluesOnly);
-  const Eigen::Vector3d spread = eigen.eigenvalues(); // increasing
-  return spread[1] < kLinearSpread * kLinearSpread * spread[2];
 }
 
 // The tufted intrinsic triangulation of the local triangulations (Sharp & Crane 2020), made as
@@ -125,9 +102,7 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   std::vector<uint32_t> nearestOthers;
   nearestOthers.reserve(n * size_t(neighbours));
   areas.assign(n, 0);
-  size_t linear = 0;
   for (size_t p = 0; p < n; p++) {
-    linear += alongLine(cloudGeometry->neighbors->neighbors[p], positions);
     points[p] = positions[p];
     double farthest2 = 0;
     for (Point q : cloudGeometry->neighbors->neighbors[p]) {
@@ -138,6 +113,7 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   }
   mlsSurface = std::make_unique<MlsSurface>(std::move(points), size_t(neighbours), std::move(nearestOthers));
   noise = mlsSurface->testNoise();
+  const double lineLike = mlsSurface->lineLikeShare();
   // On a clean cloud each point's neighbours are trimmed to those that lie flat before its local
   // triangulation (and PCA normal) is made from them; a noisy cloud's are never flat, and all k average
   // its noise out.
@@ -168,7 +144,7 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   facts.neighbours = size_t(neighbours);
   facts.meanFlatNeighbours = double(n * size_t(neighbours) - trimmed) / double(n);
   facts.components = size_t(componentCount);
-  facts.linearNeighbourhoods = linear;
+  facts.lineLikeShare = lineLike;
   Vector3 low = positions[0], high = positions[0];
   for (size_t p = 1; p < n; p++) low = componentwiseMin(low, positions[p]), high = componentwiseMax(high, positions[p]);
   facts.bboxMin = {low.x, low.y, low.z};

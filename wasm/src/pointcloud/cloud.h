@@ -36,10 +36,11 @@ struct CloudFacts {
   // lies flat (and on a noisy cloud), fewer where parts are thinner than it (pointcloud/flat_neighbours.h).
   double meanFlatNeighbours = 0;
   size_t components = 0; // of the tufted triangulation: heat flows within each one only
-  // Points whose k nearest others lie along a line (their spread across it under a tenth of their spread
-  // along it): a surface has its neighbours around each point, a cloud scanned in lines farther apart
-  // than its points along them has them in the line, and no surface to be found from them.
-  size_t linearNeighbourhoods = 0;
+  // The share of the points (every 16th) whose own MLS fit has its weighted neighbours along a line (their
+  // spread across it under a tenth of along it; MlsSurface::lineLikeShare): a surface has its neighbours
+  // around each point, a cloud scanned in lines farther apart than its points along them has them in the
+  // line, and the fits there cannot find the surface.
+  double lineLikeShare = 0;
   std::array<double, 3> bboxMin{};
   std::array<double, 3> bboxMax{};
   double bboxDiagonal = 0;

@@ -36,8 +36,14 @@ Eigen::Matrix<double, 6, 1> monomials(double u, double v) {
   return m;
 }
 
-// The noise test's sample and threshold (NoiseTest).
-constexpr size_t kNoiseSampleStep = 16;
+// A fit's weighted neighbours lie along a line when their second axis of spread is under this share of
+// the first (lineLikeShare).
+constexpr double kLineSpread = 0.1;
+
+// The points the noise test and lineLikeShare look at: every 16th, which gives their shares to within a
+// few percent at a fraction of the opening's time (each is a fit).
+constexpr size_t kSampleStep = 16;
+// The noise test's threshold (NoiseTest).
 constexpr double kMinQuadraticShare = 0.2;
 
 // projectOnPatches blends the fits of this many nearest cloud points (16 gave rougher skeletons, not
@@ -113,39 +119,52 @@ bool MlsSurface::refillAroundNearest(Vector3 at, size_t k, MlsNeighbourCache& ca
   return true;
 }
 
-MlsSurface::Fit MlsSurface::fit(Vector3 at, const std::vector<size_t>& near, bool tryQuadratic) const {
-  Fit result;
+MlsSurface::Spread MlsSurface::spread(Vector3 at, const std::vector<size_t>& near) const {
+  Spread result;
   double farthest2 = 0;
   for (size_t i : near) farthest2 = std::max(farthest2, norm2(points[i] - at));
   result.h = std::sqrt(farthest2) / 2;
   const double h = result.h;
   if (!(h > 0)) return result; // all k points coincide
 
-  // Weighted plane: centroid, then the covariance's least eigenvector as the normal.
+  // Weighted plane: centroid, then the covariance's eigenvectors (the least one the normal).
   const size_t k = near.size();
-  std::vector<double> weights(k);
-  double weightSum = 0, weightSquares = 0;
+  result.weights.resize(k);
   Vector3 centroid{0, 0, 0};
   for (size_t j = 0; j < k; j++) {
     // The Gaussian less its value at the farthest neighbour: a point entering or leaving the k nearest
     // does so with weight 0, so the surface moves continuously with the query (a step of the loop's
     // descent would otherwise jump by a share of the noise as neighbours change, and stall it).
-    weights[j] = std::exp(-norm2(points[near[j]] - at) / (h * h)) - kFarthestWeight;
-    weightSum += weights[j];
-    weightSquares += weights[j] * weights[j];
-    centroid += weights[j] * points[near[j]];
+    const double w = std::exp(-norm2(points[near[j]] - at) / (h * h)) - kFarthestWeight;
+    result.weights[j] = w;
+    result.weightSum += w;
+    result.weightSquares += w * w;
+    centroid += w * points[near[j]];
   }
-  centroid /= weightSum;
+  centroid /= result.weightSum;
+  result.centroid = centroid;
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for (size_t j = 0; j < k; j++) {
     const Eigen::Vector3d d = toEigen(points[near[j]] - centroid);
-    covariance += weights[j] * d * d.transpose();
+    covariance += result.weights[j] * d * d.transpose();
   }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-  eigen.computeDirect(covariance);
+  result.axes.computeDirect(covariance);
+  return result;
+}
+
+MlsSurface::Fit MlsSurface::fit(Vector3 at, const std::vector<size_t>& near, bool tryQuadratic) const {
+  Fit result;
+  const Spread around = spread(at, near);
+  result.h = around.h;
+  const double h = result.h;
+  if (!(h > 0)) return result;
+  const size_t k = near.size();
+  const std::vector<double>& weights = around.weights;
+  const double weightSum = around.weightSum, weightSquares = around.weightSquares;
+  const Vector3 centroid = around.centroid;
   result.centroid = centroid;
-  result.normal = fromEigen(eigen.eigenvectors().col(0)).normalize();
-  result.e1 = fromEigen(eigen.eigenvectors().col(2)).normalize();
+  result.normal = fromEigen(around.axes.eigenvectors().col(0)).normalize();
+  result.e1 = fromEigen(around.axes.eigenvectors().col(2)).normalize();
   result.e2 = cross(result.normal, result.e1);
   if (!tryQuadratic || weightSum * weightSum / weightSquares < kQuadraticMinEffectiveNeighbours) return result;
 
@@ -239,9 +258,25 @@ MlsPoint MlsSurface::projectOnPatches(Vector3 query, MlsNeighbourCache* cache) c
   return MlsPoint{position / weightSum, normal.normalize(), 2 * quadratics > used};
 }
 
+double MlsSurface::lineLikeShare() const {
+  const size_t k = std::min(neighbours, points.size());
+  size_t sampled = 0, lineLike = 0;
+  std::vector<size_t> own(k);
+  for (size_t i = 0; i < points.size(); i += kSampleStep, sampled++) {
+    // The point and its k - 1 nearest others: the neighbours of its own fit (projectOnPatches).
+    own[0] = i;
+    std::copy(nearestOthers.begin() + i * neighbours, nearestOthers.begin() + i * neighbours + (k - 1), own.begin() + 1);
+    const Spread around = spread(points[i], own);
+    if (!(around.h > 0)) continue;
+    const Eigen::Vector3d extent = around.axes.eigenvalues(); // increasing
+    lineLike += extent[1] < kLineSpread * kLineSpread * extent[2];
+  }
+  return double(lineLike) / double(sampled);
+}
+
 NoiseTest MlsSurface::testNoise() const {
   NoiseTest test;
-  for (size_t p = 0; p < points.size(); p += kNoiseSampleStep, test.sampled++) test.quadratics += project(points[p]).quadratic;
+  for (size_t p = 0; p < points.size(); p += kSampleStep, test.sampled++) test.quadratics += project(points[p]).quadratic;
   test.noisy = double(test.quadratics) < kMinQuadraticShare * double(test.sampled);
   return test;
 }

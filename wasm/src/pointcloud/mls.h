@@ -4,6 +4,7 @@
 #include "geometrycentral/utilities/vector3.h"
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include <cstdint>
 #include <memory>
@@ -68,10 +69,26 @@ public:
 
   NoiseTest testNoise() const;
 
+  // The share of the points (of a sample) whose own fit (the point and its k - 1 nearest, weighted as every
+  // fit weighs them) has its neighbours along a line, not spread over a patch: such a fit cannot tell the
+  // surface's normal from a direction in it (a cloud scanned in lines farther apart than its points along them).
+  double lineLikeShare() const;
+
   // The index of the cloud point nearest to `query`.
   size_t nearestPoint(geometrycentral::Vector3 query) const;
 
 private:
+  // The Gaussian weights of the k nearest around `at` (bandwidth h, half the farthest one's distance),
+  // their weighted centroid and the principal axes of their weighted covariance.
+  struct Spread {
+    double h = 0;
+    std::vector<double> weights;
+    double weightSum = 0, weightSquares = 0;
+    geometrycentral::Vector3 centroid{0, 0, 0};
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes;
+  };
+  Spread spread(geometrycentral::Vector3 at, const std::vector<size_t>& near) const;
+
   // One round's fit around `at`: a frame at the weighted centroid and the height over its plane.
   struct Fit {
     geometrycentral::Vector3 centroid, normal, e1, e2;

@@ -4,8 +4,9 @@
  * the farthest, then see its own line only (the next line's points are the farthest), and cannot tell the
  * surface's normal from a direction in it; far enough apart, the neighbourhoods hold no point of another
  * line at all and the cloud falls apart into its lines. The skeletons then have leaves out to the
- * surface, or no separator at all. More neighbours reach across the lines. The shared clouds have no such
- * points but for the trees' twigs (under 1%) (docs/pointcloud.md, "Scan lines").
+ * surface, or no separator at all. More neighbours reach across the lines; points thinned along the lines to
+ * their spacing make a cloud the fits see whole. The shared clouds have no such points but for the trees'
+ * twigs (under 1%) (docs/pointcloud.md, "Scan lines").
  */
 import type { CloudFacts } from '../core/types.ts';
 
@@ -18,5 +19,6 @@ export function scanLineWarning(facts: CloudFacts): string | null {
   const percent = Math.round(100 * facts.lineLikeShare);
   return `${percent}% of the points have their ${facts.neighbours} nearest neighbours along a line as the surface fits weigh them, not around them `
     + `(a cloud scanned in lines farther apart than its points along them?): the surface between the lines cannot be found `
-    + `from them; raise neighbours (--neighbours K) until they reach across the lines`;
+    + `from them; raise neighbours (--neighbours K) until they reach across the lines, or thin the points along the lines `
+    + `to about the lines' spacing`;
 }

@@ -40,7 +40,7 @@ describe('clouds scanned in lines', () => {
     expect(scanLineWarning(facts)).toBe(
       '100% of the points have their 30 nearest neighbours along a line as the surface fits weigh them, not around them (a cloud scanned in lines '
       + 'farther apart than its points along them?): the surface between the lines cannot be found from them; raise '
-      + 'neighbours (--neighbours K) until they reach across the lines',
+      + 'neighbours (--neighbours K) until they reach across the lines, or thin the points along the lines to about the lines\' spacing',
     );
   });
 

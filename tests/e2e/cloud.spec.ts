@@ -10,7 +10,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { expect, test, type Page } from '@playwright/test';
 import { fixture } from '../paths.ts';
-import { ringScannedTube } from '../unit/support/clouds.ts';
+import { ringScannedTube, xyzText } from '../unit/support/clouds.ts';
 import { canvasStats } from './pixels.ts';
 import { body, downloadSkeletonJson, enterStage, expectStage, figure, layerBox, openPage, waitForState } from './studio.ts';
 
@@ -276,10 +276,8 @@ test('changing neighbours opens the cloud again with them, and the panel says ho
 
 test('a cloud scanned in lines too far apart for its neighbours is said in the notes, until more neighbours reach across', async ({ page }) => {
   // The tube of tests/unit/cloud-scan-lines.test.ts: 12 rings of 300 points; 100 neighbours reach the next rings.
-  const tube = ringScannedTube(12, 300, 0.36);
-  const rows = Array.from({ length: tube.length / 3 }, (_, p) => Array.from(tube.subarray(3 * p, 3 * p + 3)).join(' '));
   await openPage(page);
-  await drop(page, 'tube.xyz', Buffer.from(rows.join('\n')));
+  await drop(page, 'tube.xyz', Buffer.from(xyzText(ringScannedTube(12, 300, 0.36))));
   await expect(page.getByTestId('facts-vertices')).toHaveText('3600 points', { timeout: 30_000 });
   await expect(page.getByTestId('warnings')).toContainText('100% of the points have their 30 nearest neighbours along a line');
   await expect(page.getByTestId('facts-components')).toHaveText('12');

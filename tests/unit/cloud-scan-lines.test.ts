@@ -10,7 +10,7 @@ import { loadCoreNode, type Core } from '../../lib/core/node.ts';
 import type { CloudFacts } from '../../lib/core/types.ts';
 import { fixture } from '../paths.ts';
 import { cscd } from './support/cli.ts';
-import { readCloudFile, ringScannedTube } from './support/clouds.ts';
+import { readCloudFile, ringScannedTube, xyzText } from './support/clouds.ts';
 
 let core: Core;
 let folder: string;
@@ -74,9 +74,7 @@ describe('clouds scanned in lines', () => {
 
   it('is said on stderr by the CLI, which still prints the facts', async () => {
     const file = path.join(folder, 'tube.xyz');
-    const rows: string[] = [];
-    for (let p = 0; p < tube.length / 3; p++) rows.push(Array.from(tube.subarray(3 * p, 3 * p + 3)).join(' '));
-    writeFileSync(file, rows.join('\n'));
+    writeFileSync(file, xyzText(tube));
     const result = await cscd('info', file);
     expect(result.status).toBe(0);
     expect(result.stderr).toBe(`cscd: warning: ${file}: ${scanLineWarning(factsOf(tube, 30))}\n`);

@@ -95,6 +95,13 @@ export function revolutionPoints(n: number, radius: (z: number) => number, zMin:
   return positions;
 }
 
+/** Points as XYZ text, one `x y z` row each. */
+export function xyzText(positions: Float64Array): string {
+  const rows: string[] = [];
+  for (let p = 0; p < positions.length / 3; p++) rows.push(Array.from(positions.subarray(3 * p, 3 * p + 3)).join(' '));
+  return rows.join('\n');
+}
+
 /**
  * A tube of radius 1 along z scanned in `rings` rings `gap` apart, `around` points evenly round each (each
  * ring turned a little from the last, as a turntable's scan is): with rings several times farther apart

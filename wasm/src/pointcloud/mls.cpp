@@ -237,11 +237,8 @@ MlsPoint MlsSurface::projectOnPatches(Vector3 query, MlsNeighbourCache* cache) c
   for (size_t j = 0; j < blended; j++) {
     const size_t i = near[j];
     if (patchOf[i] == kNoPatch) {
-      // The point and its k - 1 nearest others: its k nearest, as the kd-tree would list them.
-      std::vector<size_t> own{i};
-      own.insert(own.end(), nearestOthers.begin() + i * neighbours, nearestOthers.begin() + i * neighbours + (k - 1));
       patchOf[i] = uint32_t(patches.size());
-      patches.push_back(fit(points[i], own, true));
+      patches.push_back(fit(points[i], ownNeighbours(i, k), true));
     }
     const Fit& patch = patches[patchOf[i]];
     const double w = std::exp(-4 * norm2(points[i] - query) / outside2) - kFarthestWeight;
@@ -258,15 +255,17 @@ MlsPoint MlsSurface::projectOnPatches(Vector3 query, MlsNeighbourCache* cache) c
   return MlsPoint{position / weightSum, normal.normalize(), 2 * quadratics > used};
 }
 
+std::vector<size_t> MlsSurface::ownNeighbours(size_t i, size_t k) const {
+  std::vector<size_t> own{i};
+  own.insert(own.end(), nearestOthers.begin() + i * neighbours, nearestOthers.begin() + i * neighbours + (k - 1));
+  return own;
+}
+
 double MlsSurface::lineLikeShare() const {
   const size_t k = std::min(neighbours, points.size());
   size_t sampled = 0, lineLike = 0;
-  std::vector<size_t> own(k);
   for (size_t i = 0; i < points.size(); i += kSampleStep, sampled++) {
-    // The point and its k - 1 nearest others: the neighbours of its own fit (projectOnPatches).
-    own[0] = i;
-    std::copy(nearestOthers.begin() + i * neighbours, nearestOthers.begin() + i * neighbours + (k - 1), own.begin() + 1);
-    const Spread around = spread(points[i], own);
+    const Spread around = spread(points[i], ownNeighbours(i, k)); // as its patch is fitted (projectOnPatches)
     if (!(around.h > 0)) continue;
     const Eigen::Vector3d extent = around.axes.eigenvalues(); // increasing
     lineLike += extent[1] < kLineSpread * kLineSpread * extent[2];

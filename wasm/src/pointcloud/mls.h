@@ -102,6 +102,8 @@ private:
   // The k nearest points of `at` into `near`, the nearest first.
   void kNearest(geometrycentral::Vector3 at, size_t k, MlsNeighbourCache* cache, std::vector<size_t>& near) const;
   bool refillAroundNearest(geometrycentral::Vector3 at, size_t k, MlsNeighbourCache& cache) const;
+  // Point i and its k - 1 nearest others: its k nearest, as the kd-tree would list them (its own fit's).
+  std::vector<size_t> ownNeighbours(size_t i, size_t k) const;
 
   std::vector<geometrycentral::Vector3> points;
   size_t neighbours;

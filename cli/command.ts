@@ -3,13 +3,15 @@ import { readFile } from 'node:fs/promises';
 import { loadCoreNode } from '../lib/core/node.ts';
 import { AS_CLOUD, meshAsCloud } from '../lib/cloud/from-mesh.ts';
 import { scanLineWarning } from '../lib/cloud/scan-lines.ts';
+import { subsample } from '../lib/cloud/subsample.ts';
+import { defaultOptions } from '../lib/core/options.ts';
 import type { Cloud, CloudArrays, CloudOptions, Core, MeshArrays, RefinedSurface } from '../lib/core/types.ts';
 import { checkCloud } from '../lib/io/cloud-check.ts';
 import { parseMesh, parseShape, type ParsedCloud, type ParsedMesh } from '../lib/io/index.ts';
 import type { ShapeFormat } from '../lib/io/types.ts';
 import { repairMesh } from '../lib/io/repair.ts';
 import { decimate } from '../lib/mesh/decimate.ts';
-import { cloudSizeWarning, DECIMATE_TARGET, FACE_LIMIT, sizeWarning } from '../lib/mesh/limits.ts';
+import { cloudSizeWarning, DECIMATE_TARGET, FACE_LIMIT, POINT_LIMIT, SUBSAMPLE_TARGET, sizeWarning } from '../lib/mesh/limits.ts';
 
 export interface OptionSpec {
   type: 'string' | 'boolean';
@@ -96,8 +98,13 @@ export interface InputCloud extends Omit<ParsedCloud, 'format'> {
   format: ShapeFormat;
   /** What the checks (and a mesh's repairs) did, one sentence each; empty when the cloud is as in the file. */
   repairs: string[];
-  /** Index of every point (or vertex) of the file in the checked cloud, -1 for removed ones. */
+  /**
+   * Index of every point (or vertex) of the file in the checked cloud, -1 for removed ones; after
+   * --subsample, in the subsample (a point left out: the kept point that stands for it).
+   */
   pointMap: Int32Array;
+  /** The point count before --subsample, or null (not asked, or no more points than asked for). */
+  subsampledFrom: number | null;
 }
 
 interface ReadSettings {
@@ -105,6 +112,8 @@ interface ReadSettings {
   printWarnings?: boolean;
   /** A mesh file is run as a point cloud of its vertices (--as-cloud). */
   asCloud?: boolean;
+  /** A cloud is computed on about this many of its points (--subsample K). */
+  subsample?: number;
 }
 
 /** --as-cloud, for every command that reads a mesh or a cloud (the page's `asCloud` box). */
@@ -112,6 +121,23 @@ export const asCloudOption: OptionSpec = { type: 'boolean', description: AS_CLOU
 
 /** The read settings of a command line: --as-cloud given or not. */
 export const asCloudFlag = (values: OptionValues): boolean => values[AS_CLOUD.flag] === true;
+
+/** --subsample K, for every command that opens a cloud (the page's subsample of a cloud above the point limit). */
+export const subsampleOption: OptionSpec = {
+  type: 'string',
+  value: 'K',
+  description: `compute on about K of the cloud's points (Poisson-disk, seed ${defaultOptions.seed}, as the page subsamples); advised above ${POINT_LIMIT} points`,
+};
+
+/** --subsample K as a point count (more than `neighbours`), or undefined when not given. */
+export function subsampleFlag(values: OptionValues, neighbours: number): number | undefined {
+  if (values.subsample === undefined) return undefined;
+  const target = Number(values.subsample);
+  if (!Number.isInteger(target) || target <= neighbours) {
+    throw new UsageError(`--subsample must be a whole number of points above the ${neighbours} neighbours, got '${String(values.subsample)}'`);
+  }
+  return target;
+}
 
 function reportInput(file: string, warnings: string[], repairs: string[], io: CliIo, { printWarnings = true }: ReadSettings): void {
   if (!printWarnings) return;
@@ -141,7 +167,27 @@ export async function readShape(file: string, io: CliIo, neighbours: number, set
   if (settings.asCloud) throw new UsageError(`--${AS_CLOUD.flag} does not apply to ${file}: it is a point cloud already`);
   const { cloud, repairs, pointMap } = checkCloud(parsed, neighbours);
   reportInput(file, parsed.warnings, repairs, io, settings);
-  return { ...cloud, repairs, pointMap };
+  return subsampled({ ...cloud, repairs, pointMap, subsampledFrom: null }, file, io, settings);
+}
+
+/**
+ * The checked cloud, or about `settings.subsample` of its points when it has more (said on stderr): the
+ * page's subsample (lib/cloud/subsample.ts), with the same seed; the file's points map to the kept ones.
+ */
+function subsampled(cloud: InputCloud, file: string, io: CliIo, { subsample: target }: ReadSettings): InputCloud {
+  const points = cloud.positions.length / 3;
+  if (target === undefined || points <= target) return cloud;
+  const started = performance.now();
+  const { cloud: kept, leftOut, standIn } = subsample(cloud, target, defaultOptions.seed);
+  const isLeftOut = new Uint8Array(points);
+  leftOut.forEach((point) => (isLeftOut[point] = 1));
+  const placeOf = new Int32Array(points);
+  for (let point = 0, place = 0; point < points; point++) if (!isLeftOut[point]) placeOf[point] = place++;
+  leftOut.forEach((point, j) => (placeOf[point] = standIn[j]));
+  const pointMap = cloud.pointMap.map((point) => (point < 0 ? -1 : placeOf[point]));
+  const seconds = ((performance.now() - started) / 1000).toFixed(1);
+  io.stderr.write(`cscd: subsampled ${file} from ${points} to ${kept.positions.length / 3} points (Poisson-disk, seed ${defaultOptions.seed}) in ${seconds} s\n`);
+  return { ...kept, pointMap, subsampledFrom: points };
 }
 
 /** A mesh file's vertices as a cloud (--as-cloud): repaired as a mesh, then checked as a cloud; the file's vertex indices map to its points. */
@@ -152,7 +198,7 @@ function meshCloud(parsed: ParsedMesh, file: string, io: CliIo, neighbours: numb
   const warnings = [...parsed.warnings, note], allRepairs = [...mesh.repairs, ...repairs];
   reportInput(file, warnings, allRepairs, io, settings);
   const pointMap = mesh.vertexMap.map((v) => (v < 0 || pointOfVertex[v] < 0 ? -1 : checkedPoint[pointOfVertex[v]]));
-  return { kind: 'cloud', format: parsed.format, ...cloud, warnings, repairs: allRepairs, pointMap };
+  return subsampled({ kind: 'cloud', format: parsed.format, ...cloud, warnings, repairs: allRepairs, pointMap, subsampledFrom: null }, file, io, settings);
 }
 
 /** Refuses flags that do nothing for this kind of shape (--decimate on a cloud, --neighbours on a mesh). */
@@ -191,7 +237,7 @@ export function decimateIfAsked<M extends MeshArrays>(mesh: M, values: OptionVal
  */
 export async function openCloud(cloud: CloudArrays, options: CloudOptions, file: string, io: CliIo): Promise<Cloud> {
   const warning = cloudSizeWarning(cloud.positions.length / 3);
-  if (warning) io.stderr.write(`cscd: warning: ${file}: ${warning}\n`);
+  if (warning) io.stderr.write(`cscd: warning: ${file}: ${warning} (--subsample ${SUBSAMPLE_TARGET})\n`);
   const opened = (await getCore()).openCloud(cloud, options);
   const scanLines = scanLineWarning(opened.facts);
   if (scanLines) io.stderr.write(`cscd: warning: ${file}: ${scanLines}\n`);

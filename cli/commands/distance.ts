@@ -1,7 +1,7 @@
 import { writeFile } from 'node:fs/promises';
 import type { CloudOptions } from '../../lib/core/types.ts';
 import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
-import { UsageError, asCloudFlag, asCloudOption, openCloud, openSolver, readShape, refuseFlags, type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues } from '../command.ts';
+import { UsageError, asCloudFlag, asCloudOption, openCloud, openSolver, readShape, refuseFlags, subsampleFlag, subsampleOption, type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues } from '../command.ts';
 import { cloudFlagSpecs, cloudOptionsFromFlags } from './separator.ts';
 
 export const distance: Command = {
@@ -12,6 +12,7 @@ export const distance: Command = {
     source: { type: 'string', value: 'V', required: true, description: 'source vertex index (0-based; in a point cloud, point index)' },
     ...cloudFlagSpecs(),
     [AS_CLOUD.flag]: asCloudOption,
+    subsample: subsampleOption,
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
   details: [
@@ -23,7 +24,7 @@ export const distance: Command = {
   ].join('\n'),
   async run([file], options, io) {
     const cloudOptions = cloudOptionsFromFlags(options);
-    const shape = await readShape(file, io, cloudOptions.neighbours, { asCloud: asCloudFlag(options) });
+    const shape = await readShape(file, io, cloudOptions.neighbours, { asCloud: asCloudFlag(options), subsample: subsampleFlag(options, cloudOptions.neighbours) });
     // Indices are those of the file, in and out, even when the repair or the checks renumbered them.
     const json = shape.kind === 'cloud'
       ? await cloudDistance(shape, parseSource(String(options.source), shape.pointMap, 'point'), file, io, cloudOptions)
@@ -34,7 +35,7 @@ export const distance: Command = {
 };
 
 async function meshDistance(mesh: InputMesh, source: number, file: string, io: CliIo, flags: OptionValues): Promise<string> {
-  refuseFlags(flags, Object.keys(cloudFlagSpecs()), file, 'mesh');
+  refuseFlags(flags, [...Object.keys(cloudFlagSpecs()), 'subsample'], file, 'mesh');
   if (mesh.vertexMap[source] < 0) throw new UsageError(`--source ${source} is a vertex used by no face, which the repair removed`);
   const surface = await openSolver(mesh, file, io);
   try {

@@ -1,14 +1,14 @@
 import type { CloudOptions } from '../../lib/core/types.ts';
 import { refinementOf } from '../../lib/mesh/refine.ts';
 import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
-import { asCloudFlag, asCloudOption, decimateIfAsked, decimateOption, getCore, openCloud, readShape, refuseFlags, type CliIo, type Command, type InputCloud } from '../command.ts';
+import { asCloudFlag, asCloudOption, decimateIfAsked, decimateOption, getCore, openCloud, readShape, refuseFlags, subsampleFlag, subsampleOption, type CliIo, type Command, type InputCloud } from '../command.ts';
 import { cloudFlagSpecs, cloudOptionsFromFlags } from './separator.ts';
 
 export const info: Command = {
   name: 'info',
   summary: 'print facts about a mesh (counts, topology, bounding box) or a point cloud as JSON',
   args: ['<mesh|cloud>'],
-  options: { decimate: decimateOption, ...cloudFlagSpecs(), [AS_CLOUD.flag]: asCloudOption },
+  options: { decimate: decimateOption, subsample: subsampleOption, ...cloudFlagSpecs(), [AS_CLOUD.flag]: asCloudOption },
   details: [
     'Prints {file, format, vertices, faces, edges, components, boundaryLoops, genus, ..., warnings, repairs}: the facts of',
     'the mesh after the repairs listed in `repairs` (see README, Accepted input and repairs), and after',
@@ -20,12 +20,12 @@ export const info: Command = {
   ].join('\n'),
   async run([file], values, io) {
     const options = cloudOptionsFromFlags(values);
-    const shape = await readShape(file, io, options.neighbours, { printWarnings: false, asCloud: asCloudFlag(values) });
+    const shape = await readShape(file, io, options.neighbours, { printWarnings: false, asCloud: asCloudFlag(values), subsample: subsampleFlag(values, options.neighbours) });
     if (shape.kind === 'cloud') {
       refuseFlags(values, ['decimate'], file, 'point cloud');
       return printReport(io, await cloudReport(file, shape, options, io));
     }
-    refuseFlags(values, Object.keys(cloudFlagSpecs()), file, 'mesh');
+    refuseFlags(values, [...Object.keys(cloudFlagSpecs()), 'subsample'], file, 'mesh');
     const mesh = decimateIfAsked(shape, values, file, io);
     const facts = (await getCore()).inspect(mesh);
     const decimated = mesh.decimatedFrom === null ? {} : { decimatedFrom: mesh.decimatedFrom };
@@ -37,7 +37,8 @@ export const info: Command = {
 async function cloudReport(file: string, shape: InputCloud, options: CloudOptions, io: CliIo): Promise<object> {
   const cloud = await openCloud(shape, options, file, io);
   try {
-    return { file, format: shape.format, ...cloud.facts, warnings: shape.warnings, repairs: shape.repairs };
+    const subsampled = shape.subsampledFrom === null ? {} : { subsampledFrom: shape.subsampledFrom };
+    return { file, format: shape.format, ...cloud.facts, ...subsampled, warnings: shape.warnings, repairs: shape.repairs };
   } finally {
     cloud.dispose();
   }

@@ -19,7 +19,7 @@ import { random } from '../../lib/core/random.ts';
 import type { CloudOptions, CloudSeparatorStages, MeshArrays, Options, Polyline, Refinement, Separator } from '../../lib/core/types.ts';
 import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
 import {
-  UsageError, asCloudFlag, asCloudOption, openCloud, openSolver, readShape, refuseFlags,
+  UsageError, asCloudFlag, asCloudOption, openCloud, openSolver, readShape, refuseFlags, subsampleFlag, subsampleOption,
   type CliIo, type Command, type InputCloud, type InputMesh, type OptionSpec as CliOptionSpec, type OptionValues,
 } from '../command.ts';
 
@@ -215,6 +215,7 @@ export const separator: Command = {
     ...optionFlagSpecs({ pipeline: false }),
     ...cloudFlagSpecs(),
     [AS_CLOUD.flag]: asCloudOption,
+    subsample: subsampleOption,
     out: { type: 'string', value: 'FILE', description: 'write the JSON to FILE instead of stdout' },
   },
   details: [
@@ -225,7 +226,7 @@ export const separator: Command = {
   ].join('\n'),
   async run([file], values, io) {
     const cloudOptions = cloudOptionsFromFlags(values);
-    const shape = await readShape(file, io, cloudOptions.neighbours, { asCloud: asCloudFlag(values) });
+    const shape = await readShape(file, io, cloudOptions.neighbours, { asCloud: asCloudFlag(values), subsample: subsampleFlag(values, cloudOptions.neighbours) });
     const json = shape.kind === 'cloud'
       ? await cloudSeparator(shape, cloudOptions, values, file, io)
       : await meshSeparator(shape, values, file, io);
@@ -248,7 +249,7 @@ function sourceOf(values: OptionValues, count: number, element: 'vertex' | 'poin
 }
 
 async function meshSeparator(mesh: InputMesh, values: OptionValues, file: string, io: CliIo): Promise<SeparatorJson> {
-  refuseFlags(values, Object.keys(cloudFlagSpecs()), file, 'mesh');
+  refuseFlags(values, [...Object.keys(cloudFlagSpecs()), 'subsample'], file, 'mesh');
   const options = optionsFromFlags(values);
   const source = sourceOf(values, mesh.positions.length / 3, 'vertex', () => randomSources(mesh, options.seed, 1)[0]);
   if (Number.isNaN(source)) throw new UsageError(`${file}: no vertex to draw a source from (the mesh has no faces)`);

@@ -9,7 +9,7 @@ import type { CloudOptions, Options, Pipeline, PipelineProgress, ShapeOptions, S
 import { SKELETON_FORMATS, SKELETON_WRITERS, skeletonFormatFromName, type SkeletonFormat } from '../../lib/io/skeleton.ts';
 import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
 import {
-  UsageError, asCloudFlag, asCloudOption, decimateIfAsked, decimateOption, getCore, openCloud, openSolver, readShape, refuseFlags,
+  UsageError, asCloudFlag, asCloudOption, decimateIfAsked, decimateOption, getCore, openCloud, openSolver, readShape, refuseFlags, subsampleFlag, subsampleOption,
   type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues, type Output,
 } from '../command.ts';
 import { cloudFlagSpecs, cloudOptionsFromFlags, optionFlagSpecs, optionsFromFlags, settingFlagSpecs, settingsFromFlags } from './separator.ts';
@@ -74,6 +74,7 @@ export const skeleton: Command = {
     ...cloudFlagSpecs(),
     [AS_CLOUD.flag]: asCloudOption,
     decimate: decimateOption,
+    subsample: subsampleOption,
     format: { type: 'string', value: SKELETON_FORMATS.join('|'), description: 'output format (default: from the --out extension, else json)' },
     out: { type: 'string', value: 'FILE', description: 'write the skeleton to FILE instead of stdout' },
     verbose: { type: 'boolean', short: 'v', description: 'print the summary line on stderr even when it is not a terminal' },
@@ -90,7 +91,7 @@ export const skeleton: Command = {
     const cloudOptions = cloudOptionsFromFlags(values);
     const settings = settingsFromFlags(values);
     const format = outputFormat(values);
-    const shape = await readShape(file, io, cloudOptions.neighbours, { asCloud: asCloudFlag(values) });
+    const shape = await readShape(file, io, cloudOptions.neighbours, { asCloud: asCloudFlag(values), subsample: subsampleFlag(values, cloudOptions.neighbours) });
     const progress = new ProgressLine(io.stderr);
     const started = performance.now();
     let result: Skeleton;
@@ -101,7 +102,7 @@ export const skeleton: Command = {
         options = cloudOptions;
         result = await cloudSkeleton(shape, cloudOptions, settings, file, io, progress);
       } else {
-        refuseFlags(values, Object.keys(cloudFlagSpecs()), file, 'mesh');
+        refuseFlags(values, [...Object.keys(cloudFlagSpecs()), 'subsample'], file, 'mesh');
         options = optionsFromFlags(values);
         result = await meshSkeleton(decimateIfAsked(shape, values, file, io), options, settings, file, io, progress);
       }

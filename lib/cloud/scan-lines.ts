@@ -5,7 +5,8 @@
  * surface's normal from a direction in it; far enough apart, the neighbourhoods hold no point of another
  * line at all and the cloud falls apart into its lines. The skeletons then have leaves out to the
  * surface, or no separator at all. More neighbours reach across the lines; points thinned along the lines to
- * their spacing make a cloud the fits see whole. The shared clouds have no such points but for the trees'
+ * their spacing (the core measures it, CloudFacts.lineSpacing, and the count that thinning keeps) make a
+ * cloud the fits see whole. The shared clouds have no such points but for the trees'
  * twigs (under 1%) (docs/pointcloud.md, "Scan lines").
  */
 import type { CloudFacts } from '../core/types.ts';
@@ -17,8 +18,11 @@ export const SCAN_LINE_SHARE = 0.25;
 export function scanLineWarning(facts: CloudFacts): string | null {
   if (!(facts.lineLikeShare > SCAN_LINE_SHARE)) return null;
   const percent = Math.round(100 * facts.lineLikeShare);
+  const thinned = facts.lineSpacing > 0
+    ? `, ${facts.lineSpacing.toPrecision(2)} (about ${facts.pointsAtLineSpacing} points: --subsample ${facts.pointsAtLineSpacing})`
+    : '';
   return `${percent}% of the points have their ${facts.neighbours} nearest neighbours along a line as the surface fits weigh them, not around them `
     + `(a cloud scanned in lines farther apart than its points along them?): the surface between the lines cannot be found `
     + `from them; raise neighbours (--neighbours K) until they reach across the lines, or thin the points along the lines `
-    + `to about the lines' spacing`;
+    + `to about the lines' spacing${thinned}`;
 }

@@ -46,6 +46,16 @@ export interface CloudFacts extends BoundingBox {
    * them (lib/cloud/scan-lines.ts).
    */
   lineLikeShare: number;
+  /**
+   * Over those points, the median distance to the nearest point across the line (more across it than
+   * along it): the lines' spacing; 0 when no fit sees a line, or the next line lies beyond 8k nearest.
+   */
+  lineSpacing: number;
+  /**
+   * About how many points the cloud keeps when thinned along its lines to their spacing (each line-like
+   * point's nearest distance over its across distance, the median, times the points); 0 as lineSpacing.
+   */
+  pointsAtLineSpacing: number;
   /** Mean edge length of the tufted triangulation (its edges join neighbouring points): the counterpart of a mesh's meanEdgeLength. */
   meanSpacing: number;
   /** Whether the normals are the file's (else they are estimated from the neighbours, by PCA). */

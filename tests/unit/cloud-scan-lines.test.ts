@@ -1,12 +1,16 @@
 // A cloud scanned in lines farther apart than its points along them (lib/cloud/scan-lines.ts): its points'
 // fits see lines (and farther apart, the cloud falls apart into its lines), and it is said, with what to
-// do; more neighbours reach across the lines. The shared clouds (fixtures from them) have no such neighbourhoods.
+// do: more neighbours reach across the lines, and the points thinned along the lines to the spacing the core
+// measures make a cloud whose skeleton runs along the tube's axis. The shared clouds (fixtures from them)
+// have no such neighbourhoods.
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { scanLineWarning } from '../../lib/cloud/scan-lines.ts';
+import { subsampleCloud } from '../../lib/cloud/subsample.ts';
 import { loadCoreNode, type Core } from '../../lib/core/node.ts';
+import { defaultCloudOptions } from '../../lib/core/options.ts';
 import type { CloudFacts } from '../../lib/core/types.ts';
 import { fixture } from '../paths.ts';
 import { cscd } from './support/cli.ts';
@@ -37,11 +41,34 @@ describe('clouds scanned in lines', () => {
     const facts = factsOf(tube, 30);
     expect(facts.lineLikeShare).toBe(1);
     expect(facts.components, 'the cloud falls apart into its rings').toBe(12);
+    expect(facts.lineSpacing).toBeCloseTo(0.36, 3);
+    // 0.021 between points round a ring, 0.36 between rings: about 3600 x 0.021 / 0.36 points.
+    expect(facts.pointsAtLineSpacing).toBe(210);
     expect(scanLineWarning(facts)).toBe(
       '100% of the points have their 30 nearest neighbours along a line as the surface fits weigh them, not around them (a cloud scanned in lines '
       + 'farther apart than its points along them?): the surface between the lines cannot be found from them; raise '
-      + 'neighbours (--neighbours K) until they reach across the lines, or thin the points along the lines to about the lines\' spacing',
+      + 'neighbours (--neighbours K) until they reach across the lines, or thin the points along the lines to about the lines\' spacing, '
+      + '0.36 (about 210 points: --subsample 210)',
     );
+  });
+
+  it('thinned along the lines to the count measured, is one piece with no line in sight, and its skeleton runs along the axis', () => {
+    for (const gap of [0.36, 0.3]) {
+      const positions = ringScannedTube(12, 300, gap);
+      const thinned = subsampleCloud({ positions, normals: null }, factsOf(positions, 30).pointsAtLineSpacing, 1);
+      const cloud = core.openCloud(thinned, { neighbours: 30 });
+      try {
+        expect(cloud.facts, `rings ${gap} apart`).toMatchObject({ components: 1, lineLikeShare: 0, lineSpacing: 0, pointsAtLineSpacing: 0 });
+        const skeleton = cloud.skeleton(defaultCloudOptions);
+        expect(skeleton.stats.cycles).toBe(0);
+        expect(skeleton.nodes.length / 3).toBeGreaterThanOrEqual(5);
+        for (let node = 0; node < skeleton.nodes.length / 3; node++) {
+          expect(Math.hypot(skeleton.nodes[3 * node], skeleton.nodes[3 * node + 1]), `node ${node} off the axis`).toBeLessThan(0.01);
+        }
+      } finally {
+        cloud.dispose();
+      }
+    }
   });
 
   it('warns where the rings are near enough to join but every fit still sees one ring', () => {

@@ -342,6 +342,8 @@ val toVal(const CloudFacts& f) {
   o.set("meanFlatNeighbours", f.meanFlatNeighbours);
   o.set("components", f.components);
   o.set("lineLikeShare", f.lineLikeShare);
+  o.set("lineSpacing", f.lineSpacing);
+  o.set("pointsAtLineSpacing", f.pointsAtLineSpacing);
   o.set("bboxMin", toArray(f.bboxMin));
   o.set("bboxMax", toArray(f.bboxMax));
   o.set("bboxDiagonal", f.bboxDiagonal);

@@ -113,7 +113,7 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   }
   mlsSurface = std::make_unique<MlsSurface>(std::move(points), size_t(neighbours), std::move(nearestOthers));
   noise = mlsSurface->testNoise();
-  const double lineLike = mlsSurface->lineLikeShare();
+  const ScanLines lines = mlsSurface->scanLines();
   // On a clean cloud each point's neighbours are trimmed to those that lie flat before its local
   // triangulation (and PCA normal) is made from them; a noisy cloud's are never flat, and all k average
   // its noise out.
@@ -144,7 +144,9 @@ Cloud::Cloud(const CloudArrays& arrays, int neighbours) {
   facts.neighbours = size_t(neighbours);
   facts.meanFlatNeighbours = double(n * size_t(neighbours) - trimmed) / double(n);
   facts.components = size_t(componentCount);
-  facts.lineLikeShare = lineLike;
+  facts.lineLikeShare = lines.lineLikeShare;
+  facts.lineSpacing = lines.lineSpacing;
+  facts.pointsAtLineSpacing = std::min(n, size_t(std::ceil(lines.keptAtLineSpacing * double(n))));
   Vector3 low = positions[0], high = positions[0];
   for (size_t p = 1; p < n; p++) low = componentwiseMin(low, positions[p]), high = componentwiseMax(high, positions[p]);
   facts.bboxMin = {low.x, low.y, low.z};

@@ -37,10 +37,15 @@ struct CloudFacts {
   double meanFlatNeighbours = 0;
   size_t components = 0; // of the tufted triangulation: heat flows within each one only
   // The share of the points (every 16th) whose own MLS fit has its weighted neighbours along a line (their
-  // spread across it under a tenth of along it; MlsSurface::lineLikeShare): a surface has its neighbours
+  // spread across it under a tenth of along it; MlsSurface::scanLines): a surface has its neighbours
   // around each point, a cloud scanned in lines farther apart than its points along them has them in the
   // line, and the fits there cannot find the surface.
   double lineLikeShare = 0;
+  // Over those points: the lines' spacing (the median distance to the nearest point across the line) and
+  // about how many points the cloud keeps when thinned along its lines to that spacing; 0 when none is
+  // line-like or no next line lies within 8k nearest.
+  double lineSpacing = 0;
+  size_t pointsAtLineSpacing = 0;
   std::array<double, 3> bboxMin{};
   std::array<double, 3> bboxMax{};
   double bboxDiagonal = 0;

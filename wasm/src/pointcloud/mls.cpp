@@ -37,10 +37,12 @@ Eigen::Matrix<double, 6, 1> monomials(double u, double v) {
 }
 
 // A fit's weighted neighbours lie along a line when their second axis of spread is under this share of
-// the first (lineLikeShare).
+// the first (scanLines).
 constexpr double kLineSpread = 0.1;
+// scanLines looks for a line-like point's next line among this many times k nearest.
+constexpr size_t kLineSearchFactor = 8;
 
-// The points the noise test and lineLikeShare look at: every 16th, which gives their shares to within a
+// The points the noise test and scanLines look at: every 16th, which gives their shares to within a
 // few percent at a fraction of the opening's time (each is a fit).
 constexpr size_t kSampleStep = 16;
 // The noise test's threshold (NoiseTest).
@@ -261,16 +263,38 @@ std::vector<size_t> MlsSurface::ownNeighbours(size_t i, size_t k) const {
   return own;
 }
 
-double MlsSurface::lineLikeShare() const {
+ScanLines MlsSurface::scanLines() const {
   const size_t k = std::min(neighbours, points.size());
+  // The next line is looked for among this many nearest, which reach 4k points either way along a line:
+  // lines farther apart than 4k of their points' spacings stay unmeasured.
+  const size_t reach = std::min(kLineSearchFactor * k, points.size());
   size_t sampled = 0, lineLike = 0;
+  std::vector<double> apart, keptShare;
   for (size_t i = 0; i < points.size(); i += kSampleStep, sampled++) {
     const Spread around = spread(points[i], ownNeighbours(i, k)); // as its patch is fitted (projectOnPatches)
     if (!(around.h > 0)) continue;
     const Eigen::Vector3d extent = around.axes.eigenvalues(); // increasing
-    lineLike += extent[1] < kLineSpread * kLineSpread * extent[2];
+    if (!(extent[1] < kLineSpread * kLineSpread * extent[2])) continue;
+    lineLike++;
+    const Vector3 along = fromEigen(around.axes.eigenvectors().col(2));
+    double nearest = INFINITY, across = INFINITY;
+    for (size_t j : finder->kNearest(points[i], reach)) {
+      const Vector3 offset = points[j] - points[i];
+      const double distance = norm(offset);
+      if (!(distance > 0)) continue;
+      nearest = std::min(nearest, distance);
+      if (std::abs(dot(offset, along)) < distance * std::sqrt(0.5)) across = std::min(across, distance);
+    }
+    if (std::isfinite(across)) apart.push_back(across), keptShare.push_back(nearest / across);
   }
-  return double(lineLike) / double(sampled);
+  ScanLines lines;
+  lines.lineLikeShare = double(lineLike) / double(sampled);
+  auto median = [](std::vector<double>& values) {
+    std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
+    return values[values.size() / 2];
+  };
+  if (!apart.empty()) lines.lineSpacing = median(apart), lines.keptAtLineSpacing = median(keptShare);
+  return lines;
 }
 
 NoiseTest MlsSurface::testNoise() const {

@@ -41,6 +41,18 @@ struct MlsNeighbourCache {
   std::vector<std::pair<double, size_t>> refill; // scratch of MlsSurface::refillAroundNearest
 };
 
+// What MlsSurface::scanLines finds: the share of line-like fits and, over those, how far apart the lines
+// lie and how thinly to sample along them to match (0 where no fit sees a line, or no line has a
+// neighbour line within the search).
+struct ScanLines {
+  double lineLikeShare = 0;
+  // The median distance from a line-like point to the nearest point across its line (more across than along).
+  double lineSpacing = 0;
+  // The median of each such point's distance to its nearest point over that across distance: thinned along
+  // the lines to their spacing, the cloud keeps about this share of its points.
+  double keptAtLineSpacing = 0;
+};
+
 // Whether a cloud is noisy, from its MLS surface: it is when the quadratic height is fitted at fewer than
 // a fifth of a sample of its points (every 16th): the clean clouds measured fit it at 34-100% of their
 // points, the noisy ones (0.5-1% of the diagonal) at none (docs/pointcloud.md, "Noisy clouds").
@@ -69,10 +81,10 @@ public:
 
   NoiseTest testNoise() const;
 
-  // The share of the points (of a sample) whose own fit (the point and its k - 1 nearest, weighted as every
-  // fit weighs them) has its neighbours along a line, not spread over a patch: such a fit cannot tell the
-  // surface's normal from a direction in it (a cloud scanned in lines farther apart than its points along them).
-  double lineLikeShare() const;
+  // The points (of a sample) whose own fit (the point and its k - 1 nearest, weighted as every fit weighs
+  // them) has its neighbours along a line, not spread over a patch: such a fit cannot tell the surface's
+  // normal from a direction in it (a cloud scanned in lines farther apart than its points along them).
+  ScanLines scanLines() const;
 
   // The index of the cloud point nearest to `query`.
   size_t nearestPoint(geometrycentral::Vector3 query) const;

@@ -9,6 +9,7 @@
  */
 import './style.css';
 import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
+import { scanLineWarning } from '../../lib/cloud/scan-lines.ts';
 import { SHAPE_EXTENSIONS } from '../../lib/io/index.ts';
 import { SingleSource } from './single-source.ts';
 import { STAGES, SOURCE_STAGES, stageDef, stageIndex, type StageKey } from './stage-defs.ts';
@@ -29,7 +30,7 @@ import { Viewer } from './viewer/viewer.ts';
 import { WholeShape } from './whole-shape.ts';
 import { GeometryClient, WorkerError } from './worker/client.ts';
 import { CORE_MEMORY } from '../../lib/core/pool-size.ts';
-import type { Refinement } from '../../lib/core/types.ts';
+import type { CloudFacts, Refinement } from '../../lib/core/types.ts';
 import type { CloudOpenedReply, DecimatedReply, OpenChoice, OpenedReply, SkeletonReply, WriteRequest } from './worker/protocol.ts';
 
 const initial = readUrl();
@@ -38,6 +39,7 @@ const offer = new LimitOffer();
 const statusCancel = byTestId<HTMLButtonElement>('status-cancel');
 /** Runs the open mesh as a point cloud of its vertices, or as the mesh again. */
 const asCloudBox = byTestId<HTMLInputElement>('as-cloud');
+const subsampleLines = byTestId<HTMLButtonElement>('subsample-lines');
 const viewer = new Viewer(document.querySelector<HTMLElement>('#viewport')!);
 const timeline = new Timeline(document.querySelector<HTMLElement>('#timeline')!);
 const params = new ParamsPanel(document.querySelector<HTMLElement>('#params')!, initial.options, initial.settings);
@@ -56,7 +58,7 @@ let computing = 0;
 let failed = false;
 /** The choices a file is opened with besides the panel's `neighbours`: a cloud on all its points, a mesh as a cloud. */
 type FileChoice = Omit<OpenChoice, 'neighbours'>;
-const AS_GIVEN: FileChoice = Object.freeze({ allPoints: false, asCloud: false });
+const AS_GIVEN: FileChoice = Object.freeze({ allPoints: false, asCloud: false, subsample: null });
 /** How the open file was opened, and how to open it again with other choices (or other neighbours). */
 type OpenedFile = { choice: FileChoice; reopen: (choice: FileChoice) => Promise<boolean> };
 /**
@@ -203,6 +205,7 @@ function showMesh(reply: OpenedReply, sample: string | null, file: OpenedFile): 
   showOpened(reply, new SurfaceLayer(reply.positions, reply.triangles), sample, notes);
   panel.setFacts(reply.facts);
   offer.show(faces, reply.facts.vertices);
+  subsampleLines.hidden = true;
 }
 
 /** What a cloud is not computed on yet, in its notes. */
@@ -215,7 +218,17 @@ function showCloud(reply: CloudOpenedReply, sample: string | null, file: OpenedF
   mesh = { cloud: true, file, fileName: reply.fileName, sample, surfaceError: null, openMs: t.parseMs + t.inspectMs, notes, faces: 0, decimatedFrom: null };
   showOpened(reply, new PointsLayer(reply.positions, viewer.restPixelRatio, reply.leftOut, viewer.drawnPointLimit), sample, notes);
   panel.setCloudFacts(reply.facts);
-  offer.showCloud(reply.subsampledFrom, reply.facts.points, testHooks.memoryLimitMB ?? CORE_MEMORY.maximumMB);
+  // The limit's offer is for a subsample the page chose, not for one asked for.
+  offer.showCloud(file.choice.subsample === null ? reply.subsampledFrom : null, reply.facts.points, testHooks.memoryLimitMB ?? CORE_MEMORY.maximumMB);
+  showLinesOffer(reply.facts, file);
+}
+
+/** For a cloud scanned in lines (lib/cloud/scan-lines.ts), a button that opens it thinned along its lines to their spacing. */
+function showLinesOffer(facts: CloudFacts, file: OpenedFile): void {
+  const count = scanLineWarning(facts) === null ? 0 : facts.pointsAtLineSpacing;
+  subsampleLines.hidden = count === 0;
+  subsampleLines.textContent = `Subsample to ${count} points (the lines' spacing)`;
+  subsampleLines.onclick = () => void file.reopen({ ...file.choice, subsample: count });
 }
 
 /** What a mesh and a cloud just opened share in the view and the panel. */
@@ -278,7 +291,7 @@ asCloudBox.closest('label')!.title = `${AS_CLOUD.help.charAt(0).toUpperCase()}${
 asCloudBox.addEventListener('change', () => {
   if (!mesh) return;
   // The box then says what is open: the other shape, or the same one if the file cannot be opened so.
-  void mesh.file.reopen({ allPoints: false, asCloud: asCloudBox.checked }).then(() => (asCloudBox.checked = !!mesh?.cloud));
+  void mesh.file.reopen({ ...AS_GIVEN, asCloud: asCloudBox.checked }).then(() => (asCloudBox.checked = !!mesh?.cloud));
 });
 
 // -- shapes above the size limit: decimate a mesh or compute on it whole; a cloud's points all --------

@@ -19,6 +19,11 @@ export interface OpenChoice {
   neighbours: number;
   /** A point cloud above POINT_LIMIT is computed on all its points (the offer's choice), not on a subsample. */
   allPoints: boolean;
+  /**
+   * A point cloud is computed on about this many of its points (the CLI's --subsample; the page asks for
+   * it for a cloud scanned in lines, CloudFacts.pointsAtLineSpacing), or null.
+   */
+  subsample: number | null;
   /** A mesh file runs as a point cloud of its vertices (AS_CLOUD, lib/cloud/from-mesh.ts); nothing for a cloud file. */
   asCloud: boolean;
 }
@@ -193,7 +198,7 @@ export interface CloudOpenedReply {
   warnings: string[];
   /** What the checks on load did (lib/io/cloud-check.ts) and a subsampling, one sentence each. */
   repairs: string[];
-  /** The cloud's point count when it was subsampled to compute on (above POINT_LIMIT, without `allPoints`), else null. */
+  /** The cloud's point count when it was subsampled to compute on (above POINT_LIMIT without `allPoints`, or as `subsample` asked), else null. */
   subsampledFrom: number | null;
   /** The file is a mesh, run as a point cloud of its vertices (the request's `asCloud`). */
   asCloud: boolean;

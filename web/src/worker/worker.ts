@@ -214,7 +214,8 @@ type CloudInput = CloudArrays & { format: ShapeFormat; warnings: string[]; repai
 /**
  * A point cloud: checked as the CLI checks it (a bad cloud is refused with its message), subsampled
  * above POINT_LIMIT unless `allPoints` (to SUBSAMPLE_TARGET points, said among the repairs: the page
- * computes on the subsample, as the CLI advises, and offers all the points), then opened in the core
+ * computes on the subsample, as the CLI advises, and offers all the points) or to `subsample` points when
+ * asked (a cloud scanned in lines, thinned to their spacing), then opened in the core
  * with `neighbours`, without its stray points (lib/cloud/outliers.ts; found among the points computed
  * on). The page gets the points left out too: it draws them all.
  */
@@ -227,11 +228,14 @@ async function openCloud(request: OpenRequest, input: CloudInput, started: numbe
   const { cloud: checked } = checks;
   const repairs = [...input.repairs, ...checks.repairs];
   const points = checked.positions.length / 3;
-  const subsampled = points > POINT_LIMIT && !request.allPoints;
-  if (subsampled) progress(id, 'parse', `subsampling ${points} points to ${SUBSAMPLE_TARGET}…`); // seconds at a million
-  const sample = subsample(checked, subsampled ? SUBSAMPLE_TARGET : points, defaultOptions.seed);
+  const aboveLimit = points > POINT_LIMIT && !request.allPoints;
+  const target = Math.min(points, request.subsample ?? (aboveLimit ? SUBSAMPLE_TARGET : points));
+  const subsampled = target < points;
+  if (subsampled) progress(id, 'parse', `subsampling ${points} points to ${target}…`); // seconds at a million
+  const sample = subsample(checked, target, defaultOptions.seed);
   if (subsampled) {
-    repairs.push(`subsampled from ${points} to ${sample.cloud.positions.length / 3} points (Poisson-disk, seed ${defaultOptions.seed}): above ${POINT_LIMIT} points the skeleton takes too long`);
+    const why = request.subsample === null ? `above ${POINT_LIMIT} points the skeleton takes too long` : 'as asked';
+    repairs.push(`subsampled from ${points} to ${sample.cloud.positions.length / 3} points (Poisson-disk, seed ${defaultOptions.seed}): ${why}`);
   }
   const { cloud, leftOut, standIn } = input.asCloud ? sample : withoutStrays(sample, neighbours, repairs);
   const parseMs = performance.now() - started;

@@ -2,7 +2,7 @@ import { writeFile } from 'node:fs/promises';
 import type { CloudOptions } from '../../lib/core/types.ts';
 import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
 import { UsageError, asCloudFlag, asCloudOption, openCloud, openSolver, readShape, refuseFlags, subsampleFlag, subsampleOption, type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues } from '../command.ts';
-import { cloudFlagSpecs, cloudOptionsFromFlags } from './separator.ts';
+import { cloudFlagSpecs, cloudOnlyFlags, cloudOptionsFromFlags } from './separator.ts';
 
 export const distance: Command = {
   name: 'distance',
@@ -35,7 +35,7 @@ export const distance: Command = {
 };
 
 async function meshDistance(mesh: InputMesh, source: number, file: string, io: CliIo, flags: OptionValues): Promise<string> {
-  refuseFlags(flags, [...Object.keys(cloudFlagSpecs()), 'subsample'], file, 'mesh');
+  refuseFlags(flags, cloudOnlyFlags(), file, 'mesh');
   if (mesh.vertexMap[source] < 0) throw new UsageError(`--source ${source} is a vertex used by no face, which the repair removed`);
   const surface = await openSolver(mesh, file, io);
   try {

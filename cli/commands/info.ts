@@ -2,7 +2,7 @@ import type { CloudOptions } from '../../lib/core/types.ts';
 import { refinementOf } from '../../lib/mesh/refine.ts';
 import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
 import { asCloudFlag, asCloudOption, decimateIfAsked, decimateOption, getCore, openCloud, readShape, refuseFlags, subsampleFlag, subsampleOption, type CliIo, type Command, type InputCloud } from '../command.ts';
-import { cloudFlagSpecs, cloudOptionsFromFlags } from './separator.ts';
+import { cloudFlagSpecs, cloudOnlyFlags, cloudOptionsFromFlags } from './separator.ts';
 
 export const info: Command = {
   name: 'info',
@@ -25,7 +25,7 @@ export const info: Command = {
       refuseFlags(values, ['decimate'], file, 'point cloud');
       return printReport(io, await cloudReport(file, shape, options, io));
     }
-    refuseFlags(values, [...Object.keys(cloudFlagSpecs()), 'subsample'], file, 'mesh');
+    refuseFlags(values, cloudOnlyFlags(), file, 'mesh');
     const mesh = decimateIfAsked(shape, values, file, io);
     const facts = (await getCore()).inspect(mesh);
     const decimated = mesh.decimatedFrom === null ? {} : { decimatedFrom: mesh.decimatedFrom };

@@ -81,6 +81,11 @@ export function cloudFlagSpecs(): Record<string, CliOptionSpec> {
   return flagSpecsOf(OPTIONS.filter((o) => o.shapes === 'cloud'));
 }
 
+/** The flags that apply to point clouds only (those options and `--subsample`): given with a mesh, a usage error. */
+export function cloudOnlyFlags(): string[] {
+  return [...Object.keys(cloudFlagSpecs()), 'subsample'];
+}
+
 /** `defaults`, overridden by the flags that were given of these options. */
 function valuesFromFlags(specs: readonly OptionSpec[], defaults: object, values: OptionValues): Record<string, unknown> {
   const options: Record<string, unknown> = { ...defaults };
@@ -249,7 +254,7 @@ function sourceOf(values: OptionValues, count: number, element: 'vertex' | 'poin
 }
 
 async function meshSeparator(mesh: InputMesh, values: OptionValues, file: string, io: CliIo): Promise<SeparatorJson> {
-  refuseFlags(values, [...Object.keys(cloudFlagSpecs()), 'subsample'], file, 'mesh');
+  refuseFlags(values, cloudOnlyFlags(), file, 'mesh');
   const options = optionsFromFlags(values);
   const source = sourceOf(values, mesh.positions.length / 3, 'vertex', () => randomSources(mesh, options.seed, 1)[0]);
   if (Number.isNaN(source)) throw new UsageError(`${file}: no vertex to draw a source from (the mesh has no faces)`);

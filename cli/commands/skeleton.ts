@@ -12,7 +12,7 @@ import {
   UsageError, asCloudFlag, asCloudOption, decimateIfAsked, decimateOption, getCore, openCloud, openSolver, readShape, refuseFlags, subsampleFlag, subsampleOption,
   type CliIo, type Command, type InputCloud, type InputMesh, type OptionValues, type Output,
 } from '../command.ts';
-import { cloudFlagSpecs, cloudOptionsFromFlags, optionFlagSpecs, optionsFromFlags, settingFlagSpecs, settingsFromFlags } from './separator.ts';
+import { cloudFlagSpecs, cloudOnlyFlags, cloudOptionsFromFlags, optionFlagSpecs, optionsFromFlags, settingFlagSpecs, settingsFromFlags } from './separator.ts';
 
 /**
  * Threads of stage 1 (lib/core/pool-size.ts: the page's rule, with this machine's cores and memory);
@@ -102,7 +102,7 @@ export const skeleton: Command = {
         options = cloudOptions;
         result = await cloudSkeleton(shape, cloudOptions, settings, file, io, progress);
       } else {
-        refuseFlags(values, [...Object.keys(cloudFlagSpecs()), 'subsample'], file, 'mesh');
+        refuseFlags(values, cloudOnlyFlags(), file, 'mesh');
         options = optionsFromFlags(values);
         result = await meshSkeleton(decimateIfAsked(shape, values, file, io), options, settings, file, io, progress);
       }

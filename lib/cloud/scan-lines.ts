@@ -4,25 +4,36 @@
  * the farthest, then see its own line only (the next line's points are the farthest), and cannot tell the
  * surface's normal from a direction in it; far enough apart, the neighbourhoods hold no point of another
  * line at all and the cloud falls apart into its lines. The skeletons then have leaves out to the
- * surface, or no separator at all. More neighbours reach across the lines; points thinned along the lines to
- * their spacing (the core measures it, CloudFacts.lineSpacing, and the count that thinning keeps) make a
- * cloud the fits see whole. The shared clouds have no such points but for the trees'
- * twigs (under 1%) (docs/pointcloud.md, "Scan lines").
+ * surface, or no separator at all. More neighbours reach across the lines; points thinned along the lines
+ * (the core measures the lines' spacing, CloudFacts.lineSpacing) make a cloud the fits see whole. The shared
+ * clouds have no such points but for the trees' twigs (under 1%) (docs/pointcloud.md, "Scan lines").
  */
 import type { CloudFacts } from '../core/types.ts';
 
 /** Above this share of points whose fits see a line (CloudFacts.lineLikeShare), the cloud is taken for scan lines. */
 export const SCAN_LINE_SHARE = 0.25;
 
+/**
+ * Thinned along its lines to a spacing r, a cloud whose lines lie D apart has a point's k nearest within
+ * about sqrt(k r D / pi) of it: they reach this many line spacings, the next line on either side, at
+ * r = pi REACH^2 D / k, about D / 4 at k = 30. Thinner (r = D) suits tubes scanned in rings, denser the
+ * thin parts of other shapes (docs/pointcloud.md, "Scan lines").
+ */
+const REACH = 1.5;
+
+/** About how many points a cloud scanned in lines keeps thinned along them (--subsample, the page's offer); 0 where its lines were not measured. */
+export function scanLineSubsample(facts: CloudFacts): number {
+  // pointsAtLineSpacing keeps points D apart along the lines; r = D / f keeps f times as many.
+  return Math.min(facts.points, Math.round((facts.pointsAtLineSpacing * facts.neighbours) / (Math.PI * REACH * REACH)));
+}
+
 /** The warning for a cloud whose neighbourhoods are mostly lines, or null. */
 export function scanLineWarning(facts: CloudFacts): string | null {
   if (!(facts.lineLikeShare > SCAN_LINE_SHARE)) return null;
   const percent = Math.round(100 * facts.lineLikeShare);
-  const thinned = facts.lineSpacing > 0
-    ? `, ${facts.lineSpacing.toPrecision(2)} (about ${facts.pointsAtLineSpacing} points: --subsample ${facts.pointsAtLineSpacing})`
-    : '';
+  const count = scanLineSubsample(facts);
+  const thinned = count > 0 ? ` (they lie ${facts.lineSpacing.toPrecision(2)} apart: to about ${count} points, --subsample ${count})` : '';
   return `${percent}% of the points have their ${facts.neighbours} nearest neighbours along a line as the surface fits weigh them, not around them `
     + `(a cloud scanned in lines farther apart than its points along them?): the surface between the lines cannot be found `
-    + `from them; raise neighbours (--neighbours K) until they reach across the lines, or thin the points along the lines `
-    + `to about the lines' spacing${thinned}`;
+    + `from them; raise neighbours (--neighbours K) until they reach across the lines, or thin the points along the lines${thinned}`;
 }

@@ -289,18 +289,18 @@ test('a cloud scanned in lines too far apart for its neighbours is said in the n
   await expect(page.getByTestId('warnings')).not.toContainText('along a line');
 });
 
-test('a cloud scanned in lines is offered a subsample to the lines\' spacing, which opens it in one piece', async ({ page }) => {
+test('a cloud scanned in lines is offered a subsample thinned along its lines, which opens it in one piece', async ({ page }) => {
   await openPage(page);
   await drop(page, 'tube.xyz', Buffer.from(xyzText(ringScannedTube(12, 300, 0.36))));
   await expect(page.getByTestId('facts-vertices')).toHaveText('3600 points', { timeout: 30_000 });
-  await expect(page.getByTestId('warnings')).toContainText("thin the points along the lines to about the lines' spacing, 0.36 (about 210 points");
+  await expect(page.getByTestId('warnings')).toContainText('thin the points along the lines (they lie 0.36 apart: to about 891 points');
   const offer = page.getByTestId('subsample-lines');
-  await expect(offer).toHaveText("Subsample to 210 points (the lines' spacing)");
+  await expect(offer).toHaveText('Subsample to 891 points (thinned along the lines)');
   await offer.click();
   // The subsample of tests/unit/cloud-scan-lines.test.ts (lib/cloud/subsample.ts, seed 1).
-  await expect(page.getByTestId('facts-vertices')).toHaveText('196 points', { timeout: 30_000 });
+  await expect(page.getByTestId('facts-vertices')).toHaveText('728 points', { timeout: 30_000 });
   await expect(page.getByTestId('facts-components')).toHaveText('1');
-  await expect(page.getByTestId('warnings')).toContainText('Repaired: subsampled from 3600 to 196 points (Poisson-disk, seed 1): as asked');
+  await expect(page.getByTestId('warnings')).toContainText('Repaired: subsampled from 3600 to 728 points (Poisson-disk, seed 1): as asked');
   await expect(page.getByTestId('warnings')).not.toContainText('along a line');
   await expect(offer).toBeHidden();
   await expect(page.getByTestId('limit-offer'), 'no offer of all the points: the subsample was asked for').toBeHidden();

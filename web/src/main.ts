@@ -9,7 +9,7 @@
  */
 import './style.css';
 import { AS_CLOUD } from '../../lib/cloud/from-mesh.ts';
-import { scanLineWarning } from '../../lib/cloud/scan-lines.ts';
+import { scanLineSubsample, scanLineWarning } from '../../lib/cloud/scan-lines.ts';
 import { SHAPE_EXTENSIONS } from '../../lib/io/index.ts';
 import { SingleSource } from './single-source.ts';
 import { STAGES, SOURCE_STAGES, stageDef, stageIndex, type StageKey } from './stage-defs.ts';
@@ -223,11 +223,11 @@ function showCloud(reply: CloudOpenedReply, sample: string | null, file: OpenedF
   showLinesOffer(reply.facts, file);
 }
 
-/** For a cloud scanned in lines (lib/cloud/scan-lines.ts), a button that opens it thinned along its lines to their spacing. */
+/** For a cloud scanned in lines (lib/cloud/scan-lines.ts), a button that opens it thinned along its lines. */
 function showLinesOffer(facts: CloudFacts, file: OpenedFile): void {
-  const count = scanLineWarning(facts) === null ? 0 : facts.pointsAtLineSpacing;
+  const count = scanLineWarning(facts) === null ? 0 : scanLineSubsample(facts);
   subsampleLines.hidden = count === 0;
-  subsampleLines.textContent = `Subsample to ${count} points (the lines' spacing)`;
+  subsampleLines.textContent = `Subsample to ${count} points (thinned along the lines)`;
   subsampleLines.onclick = () => void file.reopen({ ...file.choice, subsample: count });
 }
 

@@ -14,17 +14,17 @@ import type { CloudFacts } from '../core/types.ts';
 export const SCAN_LINE_SHARE = 0.25;
 
 /**
- * Thinned along its lines to a spacing r, a cloud whose lines lie D apart has a point's k nearest within
- * about sqrt(k r D / pi) of it: they reach this many line spacings, the next line on either side, at
- * r = pi REACH^2 D / k, about D / 4 at k = 30. Thinner (r = D) suits tubes scanned in rings, denser the
- * thin parts of other shapes (docs/pointcloud.md, "Scan lines").
+ * How much denser than the lines' spacing a cloud scanned in lines is thinned along them: its points half
+ * the spacing apart along the lines. Points r apart along lines D apart put a point's k nearest within
+ * about sqrt(k r D / pi) of it, 2.2 lines at k = 30. Thinner (r = D) suits tubes scanned in rings but
+ * leaves sliced meshes coarse; denser (r = D / 3, D / 4) lowers their errors but closed stray cycles
+ * (docs/pointcloud.md, "Scan lines").
  */
-const REACH = 1.5;
+const ALONG_PER_SPACING = 2;
 
 /** About how many points a cloud scanned in lines keeps thinned along them (--subsample, the page's offer); 0 where its lines were not measured. */
 export function scanLineSubsample(facts: CloudFacts): number {
-  // pointsAtLineSpacing keeps points D apart along the lines; r = D / f keeps f times as many.
-  return Math.min(facts.points, Math.round((facts.pointsAtLineSpacing * facts.neighbours) / (Math.PI * REACH * REACH)));
+  return Math.min(facts.points, ALONG_PER_SPACING * facts.pointsAtLineSpacing);
 }
 
 /** The warning for a cloud whose neighbourhoods are mostly lines, or null. */

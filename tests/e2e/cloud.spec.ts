@@ -293,14 +293,14 @@ test('a cloud scanned in lines is offered a subsample thinned along its lines, w
   await openPage(page);
   await drop(page, 'tube.xyz', Buffer.from(xyzText(ringScannedTube(12, 300, 0.36))));
   await expect(page.getByTestId('facts-vertices')).toHaveText('3600 points', { timeout: 30_000 });
-  await expect(page.getByTestId('warnings')).toContainText('thin the points along the lines (they lie 0.36 apart: to about 891 points');
+  await expect(page.getByTestId('warnings')).toContainText('thin the points along the lines (they lie 0.36 apart: to about 420 points');
   const offer = page.getByTestId('subsample-lines');
-  await expect(offer).toHaveText('Subsample to 891 points (thinned along the lines)');
+  await expect(offer).toHaveText('Subsample to 420 points (thinned along the lines)');
   await offer.click();
   // The subsample of tests/unit/cloud-scan-lines.test.ts (lib/cloud/subsample.ts, seed 1).
-  await expect(page.getByTestId('facts-vertices')).toHaveText('728 points', { timeout: 30_000 });
+  await expect(page.getByTestId('facts-vertices')).toHaveText('398 points', { timeout: 30_000 });
   await expect(page.getByTestId('facts-components')).toHaveText('1');
-  await expect(page.getByTestId('warnings')).toContainText('Repaired: subsampled from 3600 to 728 points (Poisson-disk, seed 1): as asked');
+  await expect(page.getByTestId('warnings')).toContainText('Repaired: subsampled from 3600 to 398 points (Poisson-disk, seed 1): as asked');
   await expect(page.getByTestId('warnings')).not.toContainText('along a line');
   await expect(offer).toBeHidden();
   await expect(page.getByTestId('limit-offer'), 'no offer of all the points: the subsample was asked for').toBeHidden();

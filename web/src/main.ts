@@ -56,7 +56,7 @@ const layerColors = new Map<string, string>();
 let opening = 0;
 let computing = 0;
 let failed = false;
-/** The choices a file is opened with besides the panel's `neighbours`: a cloud on all its points, a mesh as a cloud. */
+/** The choices a file is opened with besides the panel's `neighbours`: a cloud on all its points or on a subsample, a mesh as a cloud. */
 type FileChoice = Omit<OpenChoice, 'neighbours'>;
 const AS_GIVEN: FileChoice = Object.freeze({ allPoints: false, asCloud: false, subsample: null });
 /** How the open file was opened, and how to open it again with other choices (or other neighbours). */

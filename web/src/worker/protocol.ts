@@ -21,7 +21,7 @@ export interface OpenChoice {
   allPoints: boolean;
   /**
    * A point cloud is computed on about this many of its points (the CLI's --subsample; the page asks for
-   * it for a cloud scanned in lines, CloudFacts.pointsAtLineSpacing), or null.
+   * it for a cloud scanned in lines, lib/cloud/scan-lines.ts's scanLineSubsample), or null.
    */
   subsample: number | null;
   /** A mesh file runs as a point cloud of its vertices (AS_CLOUD, lib/cloud/from-mesh.ts); nothing for a cloud file. */

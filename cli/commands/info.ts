@@ -14,9 +14,11 @@ export const info: Command = {
     'the mesh after the repairs listed in `repairs` (see README, Accepted input and repairs), and after',
     '--decimate (then `decimatedFrom` is the face count before). `refined` is what the computing commands do to a',
     'coarse mesh first (lib/mesh/refine.ts: {fromFaces, toFaces, levels}), or null.',
-    'For a point cloud, {file, format, points, neighbours, meanFlatNeighbours, components, bboxMin, bboxMax, bboxDiagonal,',
-    'meanSpacing, normalsFromFile, warnings, repairs}: the facts of the cloud opened with --neighbours K (see',
-    'docs/pointcloud.md; meanFlatNeighbours: the neighbours kept on average where parts are thinner than K).',
+    'For a point cloud, {file, format, points, neighbours, meanFlatNeighbours, components, lineLikeShare, lineSpacing,',
+    'pointsAtLineSpacing, bboxMin, bboxMax, bboxDiagonal, meanSpacing, normalsFromFile, warnings, repairs}: the facts of the',
+    'cloud opened with --neighbours K (see docs/pointcloud.md; meanFlatNeighbours: the neighbours kept on average where',
+    'parts are thinner than K; lineLikeShare, lineSpacing, pointsAtLineSpacing: a cloud scanned in lines), after',
+    '--subsample K (then `subsampledFrom` is the point count before).',
   ].join('\n'),
   async run([file], values, io) {
     const options = cloudOptionsFromFlags(values);

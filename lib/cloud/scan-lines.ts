@@ -10,8 +10,12 @@
  */
 import type { CloudFacts } from '../core/types.ts';
 
-/** Above this share of points whose fits see a line (CloudFacts.lineLikeShare), the cloud is taken for scan lines. */
-export const SCAN_LINE_SHARE = 0.25;
+/**
+ * Above this share of points whose fits see a line (CloudFacts.lineLikeShare), the cloud is taken for scan
+ * lines: meshes sliced in lines had 0.10-0.98 (and stray cycles from 0.10), clouds sampled over surfaces 0,
+ * tree scans' twigs up to 0.012.
+ */
+export const SCAN_LINE_SHARE = 0.05;
 
 /**
  * How much denser than the lines' spacing a cloud scanned in lines is thinned along them: its points half

@@ -178,13 +178,8 @@ function subsampled(cloud: InputCloud, file: string, io: CliIo, { subsample: tar
   const points = cloud.positions.length / 3;
   if (target === undefined || points <= target) return cloud;
   const started = performance.now();
-  const { cloud: kept, leftOut, standIn } = subsample(cloud, target, defaultOptions.seed);
-  const isLeftOut = new Uint8Array(points);
-  leftOut.forEach((point) => (isLeftOut[point] = 1));
-  const placeOf = new Int32Array(points);
-  for (let point = 0, place = 0; point < points; point++) if (!isLeftOut[point]) placeOf[point] = place++;
-  leftOut.forEach((point, j) => (placeOf[point] = standIn[j]));
-  const pointMap = cloud.pointMap.map((point) => (point < 0 ? -1 : placeOf[point]));
+  const { cloud: kept, pointOf } = subsample(cloud, target, defaultOptions.seed);
+  const pointMap = cloud.pointMap.map((point) => (point < 0 ? -1 : pointOf[point]));
   const seconds = ((performance.now() - started) / 1000).toFixed(1);
   io.stderr.write(`cscd: subsampled ${file} from ${points} to ${kept.positions.length / 3} points (Poisson-disk, seed ${defaultOptions.seed}) in ${seconds} s\n`);
   return { ...kept, pointMap, subsampledFrom: points };

@@ -32,6 +32,8 @@ export interface Subsample<C extends CloudArrays> {
   leftOut: Int32Array;
   /** For each point left out, the index in `cloud` of a kept point within the subsample's radius of it. */
   standIn: Int32Array;
+  /** For each input point, its index in `cloud`, or its stand-in's when it was left out. */
+  pointOf: Int32Array;
 }
 
 /**
@@ -45,7 +47,7 @@ export function subsampleCloud<C extends CloudArrays>(cloud: C, targetCount: num
 /** subsampleCloud, with the points left out and their stand-ins (the page draws them all). */
 export function subsample<C extends CloudArrays>(cloud: C, targetCount: number, seed: number): Subsample<C> {
   const n = cloud.positions.length / 3;
-  if (n <= targetCount) return { cloud, leftOut: new Int32Array(0), standIn: new Int32Array(0) };
+  if (n <= targetCount) return { cloud, leftOut: new Int32Array(0), standIn: new Int32Array(0), pointOf: Int32Array.from({ length: n }, (_, i) => i) };
   const order = shuffled(n, seed);
   const positions = new Float64Array(3 * n);
   order.forEach((i, j) => positions.set(cloud.positions.subarray(3 * i, 3 * i + 3), 3 * j));
@@ -88,10 +90,12 @@ export function subsample<C extends CloudArrays>(cloud: C, targetCount: number, 
     leftOut[l] = order[j];
     standIn[l++] = placeOf[order[below.to[j]]]; // weld joined it to a kept point within the radius
   }
+  leftOut.forEach((point, j) => (placeOf[point] = standIn[j]));
   return {
     cloud: { ...cloud, positions: gather(cloud.positions, kept, Float64Array), normals: cloud.normals && gather(cloud.normals, kept, Float32Array) },
     leftOut,
     standIn,
+    pointOf: placeOf,
   };
 }
 

@@ -72,6 +72,17 @@ describe('subsampleCloud', () => {
     expect(subsample(sphere, 20_000, 1).leftOut).toHaveLength(0);
   });
 
+  it('maps every input point to its place in the subsample, or to its stand-in\'s', () => {
+    const { cloud, leftOut, standIn, pointOf } = subsample(sphere, 1000, 3);
+    const isLeftOut = new Set(leftOut);
+    for (let i = 0; i < 20_000; i++) {
+      if (isLeftOut.has(i)) continue;
+      expect(key(cloud.positions, pointOf[i]), `kept point ${i}`).toBe(key(sphere.positions, i));
+    }
+    leftOut.forEach((i, j) => expect(pointOf[i]).toBe(standIn[j]));
+    expect(Array.from(subsample(sphere, 20_000, 1).pointOf.subarray(0, 5))).toEqual([0, 1, 2, 3, 4]);
+  });
+
   it('leaves points out in a shuffled order: the first few spread like all of them, whatever the input order', () => {
     // The sphere's points from south to north, as a scan's lines come.
     const south = Array.from({ length: 20_000 }, (_, i) => i).sort((a, b) => sphere.positions[3 * a + 2] - sphere.positions[3 * b + 2]);

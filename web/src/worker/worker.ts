@@ -275,7 +275,7 @@ async function openCloud(request: OpenRequest, input: CloudInput, started: numbe
  * The subsample without its stray points (lib/cloud/outliers.ts, said among the repairs); a point left
  * out whose stand-in was a stray goes with it (a stray stands alone: such points lie beside it).
  */
-function withoutStrays<C extends CloudArrays>(sample: Subsample<C>, neighbours: number, repairs: string[]): Subsample<C> {
+function withoutStrays<C extends CloudArrays>(sample: Subsample<C>, neighbours: number, repairs: string[]): Omit<Subsample<C>, 'pointOf'> {
   const checks = checkCloud(sample.cloud, neighbours, { outliers: true });
   if (checks.repairs.length === 0) return sample;
   repairs.push(...checks.repairs);

@@ -1,9 +1,11 @@
 #include "cscd/graph.h"
 
+#include "cscd/measures.h"
 #include "cscd/union_find.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 
 using geometrycentral::Vector3;
@@ -30,8 +32,8 @@ bool between(const SeparatorFrame& m, const SeparatorFrame& a, const SeparatorFr
 // and their mean lies nowhere deep: near the surface or outside. Measured (seed 1, the 91 groups of four
 // regions or more of 37 clouds and 29 meshes; docs/skeleton.md, "Tilings"; spread in radii / in
 // depths): branchings 0.1-2.9 radii, but star8's eight arms around a ball 4.1-4.2 radii / 1.6 depths;
-// tilings 8.8 / 16 (armadillo_noise1.0, 70 regions), 15 / 92 (deer_noise1.0, 78), 4.9 / 76 (a noisy
-// wire hanger, 74), and 4.3 / 28 around a thin-walled cup's hollow (5 regions).
+// tilings 8.8 / 16 (armadillo_noise1.0, 70 regions), 15 / 92 (deer_noise1.0, 78), 4.9 / 76 (the noisy
+// hanger's strips, 74), and 4.3 / 28 around a thin-walled cup's hollow (5 regions).
 constexpr double kMaxSpreadInRadii = 4, kMaxSpreadInDepths = 10;
 
 // surface: the shape's elements; the depth of a point is its distance to the nearest.
@@ -51,20 +53,114 @@ bool tiling(const std::vector<Vector3>& places, const std::set<size_t>& members,
   return spread > kMaxSpreadInDepths * depth;
 }
 
-// Kruskal's tree of the shortest of `edges` (between the nodes' positions) put back into `edgeSet`:
-// the members stay connected, with no cycle among them, as a star would leave them, and each joined to
-// its nearest neighbours on the surface instead of to one hub across the shape.
-void joinByShortestTree(const SkeletonGraph& graph, const std::set<std::array<size_t, 2>>& edges,
-                        std::set<std::array<size_t, 2>>& edgeSet) {
+// Edge sets as rows of bits over GF(2), reduced against a basis: whether a cycle is a sum of others.
+class CycleSpace {
+public:
+  using Row = std::vector<uint64_t>;
+  explicit CycleSpace(size_t edges) : words((edges + 63) / 64) {}
+  Row row() const { return Row(words, 0); }
+  static void set(Row& r, size_t bit) { r[bit / 64] ^= uint64_t(1) << (bit % 64); }
+  // Adds r to the span; false when it was in it already.
+  bool add(Row r) {
+    for (size_t w = words; w-- > 0;)
+      while (r[w]) {
+        const size_t top = 64 * w + 63 - size_t(__builtin_clzll(r[w]));
+        auto it = basis.find(top);
+        if (it == basis.end()) {
+          basis.emplace(top, std::move(r));
+          return true;
+        }
+        for (size_t i = 0; i <= w; i++) r[i] ^= it->second[i];
+      }
+    return false;
+  }
+
+private:
+  size_t words;
+  std::map<size_t, Row> basis; // by highest bit
+};
+
+// How a group's members are joined instead of by its triangles: Kruskal's tree of the shortest of its
+// edges (between the nodes' positions), which keeps them connected with no cycle among them and each
+// joined to its nearest neighbours on the surface, and the edges that close the group's holes. Each edge
+// left out of the tree closes a cycle of it; the triangles fill most (the cycle is a sum of their
+// boundaries); the others go round a hole of the group, either round a part of the shape (tiles round a
+// leg: the cycle's middle is inside) or round a hole of the shape (regions round a handle: outside). A
+// star or a tree alone loses the second kind, and with it a cycle of the shape (a noisy strip bent into a
+// ring, docs/skeleton.md "Tilings").
+struct GroupJoin {
+  std::vector<std::array<size_t, 2>> tree, holes;
+};
+GroupJoin joinGroup(const SkeletonGraph& graph, const std::set<std::array<size_t, 2>>& edges,
+                    const std::vector<std::array<size_t, 3>>& triangles, const std::function<bool(const Vector3&)>& inside) {
+  std::map<std::array<size_t, 2>, size_t> index;
+  for (const auto& e : edges) index.emplace(e, index.size());
+  CycleSpace filled(edges.size());
+  for (const auto& t : triangles) {
+    CycleSpace::Row boundary = filled.row();
+    for (std::array<size_t, 2> e : {std::array<size_t, 2>{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}}) CycleSpace::set(boundary, index.at(e));
+    filled.add(std::move(boundary));
+  }
+
   std::vector<std::pair<double, std::array<size_t, 2>>> byLength;
   for (const auto& e : edges) byLength.push_back({norm(graph.nodes[e[0]] - graph.nodes[e[1]]), e});
   std::sort(byLength.begin(), byLength.end());
+  GroupJoin join;
   UnionFind tree(graph.nodes.size());
-  for (const auto& [length, e] : byLength)
-    if (tree.find(uint32_t(e[0])) != tree.find(uint32_t(e[1]))) {
-      tree.unite(uint32_t(e[0]), uint32_t(e[1]));
-      edgeSet.insert(e);
+  std::map<size_t, std::vector<size_t>> treeNeighbours;
+  std::vector<std::array<size_t, 2>> closing;
+  for (const auto& [length, e] : byLength) {
+    if (tree.find(uint32_t(e[0])) == tree.find(uint32_t(e[1]))) {
+      closing.push_back(e);
+      continue;
     }
+    tree.unite(uint32_t(e[0]), uint32_t(e[1]));
+    join.tree.push_back(e);
+    treeNeighbours[e[0]].push_back(e[1]);
+    treeNeighbours[e[1]].push_back(e[0]);
+  }
+
+  // Each closing edge's cycle (the tree's path between its ends, and the edge), shortest first: a
+  // short cycle round a gap in the tiles, whose middle is inside, is then known before a long one round
+  // a handle, which may go round that gap as well and would otherwise count as a second handle.
+  struct Cycle {
+    double length = 0;
+    std::array<size_t, 2> edge;
+    CycleSpace::Row edges;
+    std::vector<Vector3> loop;
+  };
+  std::vector<Cycle> cycles;
+  for (const auto& e : closing) {
+    std::map<size_t, size_t> from{{e[0], e[0]}};
+    std::vector<size_t> queue{e[0]};
+    for (size_t i = 0; i < queue.size() && !from.count(e[1]); i++)
+      for (size_t w : treeNeighbours[queue[i]])
+        if (from.emplace(w, queue[i]).second) queue.push_back(w);
+    Cycle cycle{norm(graph.nodes[e[0]] - graph.nodes[e[1]]), e, filled.row(), {graph.nodes[e[1]]}};
+    CycleSpace::set(cycle.edges, index.at(e));
+    for (size_t v = e[1]; v != e[0]; v = from[v]) {
+      CycleSpace::set(cycle.edges, index.at({std::min(v, from[v]), std::max(v, from[v])}));
+      cycle.length += norm(graph.nodes[v] - graph.nodes[from[v]]);
+      cycle.loop.push_back(graph.nodes[from[v]]);
+    }
+    cycles.push_back(std::move(cycle));
+  }
+  std::stable_sort(cycles.begin(), cycles.end(), [](const Cycle& a, const Cycle& b) { return a.length < b.length; });
+  // Cycles round one hole of the shape (a wide band tiled in two rings round it) have their middles on
+  // its axis, nearer each other than their radii; round two holes, at least a hole's width apart.
+  std::vector<std::pair<Vector3, double>> keptHoles; // their cycles' middles and radii
+  for (Cycle& cycle : cycles) {
+    if (!filled.add(std::move(cycle.edges))) continue;
+    const Vector3 middle = loopCentroid(cycle.loop, true);
+    const double radius = cycle.length / (2 * M_PI);
+    if (inside(middle) || std::any_of(keptHoles.begin(), keptHoles.end(), [&](const auto& hole) {
+          return norm(hole.first - middle) < std::min(hole.second, radius);
+        }))
+      continue;
+    keptHoles.push_back({middle, radius});
+    join.holes.push_back(cycle.edge);
+  }
+  return join;
 }
 
 } // namespace
@@ -79,7 +175,8 @@ size_t SkeletonGraph::components() const {
 }
 
 void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, Vector3>& junctions,
-                    const std::vector<SeparatorFrame>& separators, const std::vector<Vector3>& surface) {
+                    const std::vector<SeparatorFrame>& separators, const std::vector<Vector3>& surface,
+                    const std::function<bool(const Vector3&)>& inside) {
   std::set<std::array<size_t, 2>> edgeSet;
   for (auto e : graph.edges) edgeSet.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
   auto present = [&](const std::array<size_t, 3>& t) {
@@ -132,18 +229,23 @@ void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, 
 
   std::map<size_t, std::set<size_t>> members;
   std::map<size_t, std::set<std::array<size_t, 2>>> groupEdges;
+  std::map<size_t, std::vector<std::array<size_t, 3>>> groupTriangles;
   std::map<size_t, std::vector<Vector3>> places;
   for (size_t i = 0; i < triangles.size(); i++) {
     const auto& t = triangles[i];
     size_t g = groups.find(uint32_t(i));
     members[g].insert(t.begin(), t.end());
     groupEdges[g].insert({{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}});
+    groupTriangles[g].push_back(t);
     places[g].push_back(junctions.at(t));
   }
   for (const auto& [g, nodes] : members) {
     for (const auto& e : groupEdges[g]) edgeSet.erase(e);
-    if (tiling(places[g], nodes, separators, surface)) {
-      joinByShortestTree(graph, groupEdges[g], edgeSet);
+    // A tiling, or regions round a hole of the shape (no one branching either): its tree and its holes.
+    const GroupJoin join = joinGroup(graph, groupEdges[g], groupTriangles[g], inside);
+    if (!join.holes.empty() || tiling(places[g], nodes, separators, surface)) {
+      edgeSet.insert(join.tree.begin(), join.tree.end());
+      edgeSet.insert(join.holes.begin(), join.holes.end());
       continue;
     }
     Vector3 center{0, 0, 0};

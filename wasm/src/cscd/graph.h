@@ -3,6 +3,7 @@
 #include "geometrycentral/utilities/vector3.h"
 
 #include <array>
+#include <functional>
 #include <map>
 #include <set>
 #include <vector>
@@ -36,9 +37,11 @@ struct SeparatorFrame {
 // kept. A junction of three consecutive slices of one tube (`separators[i]`: node i's separator, for the
 // first nodes) is no branching: its edge between the outer two is dropped instead. A group whose
 // junctions are spread over many separator radii, around no deep middle, is a tiling of the surface
-// (`surface`: the shape's elements), not one branching: its members are joined by the shortest tree of
-// its edges instead of a star (the same cycles either way).
+// (`surface`: the shape's elements), not one branching, and so is a group whose triangles go round a hole
+// of the shape (a cycle of the group that its triangles do not fill, whose middle is not `inside`): their
+// members are joined by the shortest tree of their edges, plus an edge closing each such hole.
 void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, geometrycentral::Vector3>& junctions,
-                    const std::vector<SeparatorFrame>& separators, const std::vector<geometrycentral::Vector3>& surface);
+                    const std::vector<SeparatorFrame>& separators, const std::vector<geometrycentral::Vector3>& surface,
+                    const std::function<bool(const geometrycentral::Vector3&)>& inside);
 
 } // namespace cscd

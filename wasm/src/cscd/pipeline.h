@@ -211,7 +211,8 @@ public:
     std::vector<SeparatorFrame> frames;
     for (const Candidate* c : packed)
       frames.push_back(c->closed ? SeparatorFrame{loopCentroid(c->loop, true), loopNormal(c->loop), separatorRadius(*c)} : SeparatorFrame{});
-    cliquesToStars(graph, regions.junctions, frames, realization.samples().positions);
+    const auto inside = [&](const geometrycentral::Vector3& p) { return realization.inside(p); };
+    cliquesToStars(graph, regions.junctions, frames, realization.samples().positions, inside);
     realization.centre(graph, packed);
     clock.lap("graph");
 
@@ -221,8 +222,7 @@ public:
       width[r] = kBandWidth * separatorRadius(*packed[r]);
       solid[r] = packed[r]->closed;
     }
-    skeleton.vertexToNode = refineIntoBands(graph, regions, realization.samples(), width, solid,
-                                            [&](const geometrycentral::Vector3& p) { return realization.inside(p); });
+    skeleton.vertexToNode = refineIntoBands(graph, regions, realization.samples(), width, solid, inside);
     realization.fitRadii(graph);
     clock.lap("bands");
     return skeleton;

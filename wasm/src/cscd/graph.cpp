@@ -87,7 +87,7 @@ private:
 // boundaries); the others go round a hole of the group, either round a part of the shape (tiles round a
 // leg: the cycle's middle is inside) or round a hole of the shape (regions round a handle: outside). A
 // star or a tree alone loses the second kind, and with it a cycle of the shape (a noisy strip bent into a
-// ring, docs/skeleton.md "Tilings").
+// ring, docs/skeleton.md "Holes of a group").
 struct GroupJoin {
   std::vector<std::array<size_t, 2>> tree, holes;
 };

@@ -14,6 +14,9 @@ namespace cscd {
 
 namespace {
 
+// A junction triangle's three edges (its nodes are sorted, so each edge is too).
+std::array<std::array<size_t, 2>, 3> sides(const std::array<size_t, 3>& t) { return {{{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}}}; }
+
 // Whether separator m lies between separators a and b as consecutive slices of one tube: its plane
 // between their loop centroids, and both within its radius of its axis. Two branches that leave a tube
 // side by side (fingers) lie beside each other's axes, and a branch leaving between two slices lies on
@@ -98,7 +101,7 @@ GroupJoin joinGroup(const SkeletonGraph& graph, const std::set<std::array<size_t
   CycleSpace filled(edges.size());
   for (const auto& t : triangles) {
     CycleSpace::Row boundary = filled.row();
-    for (std::array<size_t, 2> e : {std::array<size_t, 2>{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}}) CycleSpace::set(boundary, index.at(e));
+    for (const auto& e : sides(t)) CycleSpace::set(boundary, index.at(e));
     filled.add(std::move(boundary));
   }
 
@@ -108,10 +111,10 @@ GroupJoin joinGroup(const SkeletonGraph& graph, const std::set<std::array<size_t
   GroupJoin join;
   UnionFind tree(graph.nodes.size());
   std::map<size_t, std::vector<size_t>> treeNeighbours;
-  std::vector<std::array<size_t, 2>> closing;
+  std::vector<std::pair<double, std::array<size_t, 2>>> closing;
   for (const auto& [length, e] : byLength) {
     if (tree.find(uint32_t(e[0])) == tree.find(uint32_t(e[1]))) {
-      closing.push_back(e);
+      closing.push_back({length, e});
       continue;
     }
     tree.unite(uint32_t(e[0]), uint32_t(e[1]));
@@ -130,13 +133,13 @@ GroupJoin joinGroup(const SkeletonGraph& graph, const std::set<std::array<size_t
     std::vector<Vector3> loop;
   };
   std::vector<Cycle> cycles;
-  for (const auto& e : closing) {
+  for (const auto& [length, e] : closing) {
     std::map<size_t, size_t> from{{e[0], e[0]}};
     std::vector<size_t> queue{e[0]};
     for (size_t i = 0; i < queue.size() && !from.count(e[1]); i++)
       for (size_t w : treeNeighbours[queue[i]])
         if (from.emplace(w, queue[i]).second) queue.push_back(w);
-    Cycle cycle{norm(graph.nodes[e[0]] - graph.nodes[e[1]]), e, filled.row(), {graph.nodes[e[1]]}};
+    Cycle cycle{length, e, filled.row(), {graph.nodes[e[1]]}};
     CycleSpace::set(cycle.edges, index.at(e));
     for (size_t v = e[1]; v != e[0]; v = from[v]) {
       CycleSpace::set(cycle.edges, index.at({std::min(v, from[v]), std::max(v, from[v])}));
@@ -180,7 +183,8 @@ void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, 
   std::set<std::array<size_t, 2>> edgeSet;
   for (auto e : graph.edges) edgeSet.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
   auto present = [&](const std::array<size_t, 3>& t) {
-    return edgeSet.count({t[0], t[1]}) && edgeSet.count({t[1], t[2]}) && edgeSet.count({t[0], t[2]});
+    const auto edges = sides(t);
+    return std::all_of(edges.begin(), edges.end(), [&](const auto& e) { return edgeSet.count(e) > 0; });
   };
 
   // Slices first: three consecutive slices of one tube meet where their separators are not parallel
@@ -190,7 +194,7 @@ void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, 
   // that their star removes.
   std::map<std::array<size_t, 2>, std::vector<std::array<size_t, 3>>> junctionsOfEdge;
   for (const auto& [t, place] : junctions)
-    for (std::array<size_t, 2> e : {std::array<size_t, 2>{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}}) junctionsOfEdge[e].push_back(t);
+    for (const auto& e : sides(t)) junctionsOfEdge[e].push_back(t);
   auto hasFrame = [&](size_t v) { return v < separators.size() && norm2(separators[v].normal) > 0; };
   // Passes until none drops an edge: a triangle that a drop takes away no longer holds back the slices
   // that share their outer edge with it.
@@ -221,7 +225,7 @@ void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, 
   std::map<std::array<size_t, 2>, size_t> firstTriangleOfEdge;
   for (size_t i = 0; i < triangles.size(); i++) {
     const auto& t = triangles[i];
-    for (std::array<size_t, 2> e : {std::array<size_t, 2>{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}}) {
+    for (const auto& e : sides(t)) {
       auto [it, inserted] = firstTriangleOfEdge.emplace(e, i);
       if (!inserted) groups.unite(uint32_t(i), uint32_t(it->second));
     }
@@ -235,7 +239,7 @@ void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, 
     const auto& t = triangles[i];
     size_t g = groups.find(uint32_t(i));
     members[g].insert(t.begin(), t.end());
-    groupEdges[g].insert({{t[0], t[1]}, {t[1], t[2]}, {t[0], t[2]}});
+    for (const auto& e : sides(t)) groupEdges[g].insert(e);
     groupTriangles[g].push_back(t);
     places[g].push_back(junctions.at(t));
   }

@@ -28,6 +28,12 @@ constexpr int kPlaneRays = 32;
 constexpr double kPlaneReach = 2.0;
 constexpr int kSpaceRays = 64;
 constexpr double kEscapeShare = 0.25;
+// ... and the shell about as deep on both sides of the loop: open space (a cube the flood reached, or
+// next to one) no more than this many cubes farther away on one side than on the other, a median over
+// the loop's points (a shell's faces lie on cube boundaries, so the two sides differ by up to a cube at
+// a point; over cross-sections of open tubes the median was at most half a cube, over loops round the
+// holes of rings with walls 7 noise deviations thick 1.25-3.25 cubes; docs/pointcloud.md).
+constexpr double kWallCubes = 1.0;
 
 } // namespace
 
@@ -113,6 +119,16 @@ bool ExteriorGrid::meetsShell(const Vector3& p, const Vector3& d, double reach) 
   return false;
 }
 
+double ExteriorGrid::toOpenSpace(const Vector3& p, const Vector3& d, double reach) const {
+  for (double t = 0; t < reach; t += cellSize / 4) {
+    const std::array<long, 3> c = cellOf(p + t * d);
+    for (int a = 0; a < 3; a++)
+      if (!(c[a] >= 0 && c[a] < dims[a])) return t;
+    if (!inner[cellIndex(c)]) return t;
+  }
+  return reach;
+}
+
 bool ExteriorGrid::enclosesCrossSection(const std::vector<Vector3>& loop) const {
   if (loop.size() < 3) return false;
   const double radius = loopLength(loop) / (2 * M_PI);
@@ -130,6 +146,20 @@ bool ExteriorGrid::enclosesCrossSection(const std::vector<Vector3>& loop) const 
     const double angle = 2 * M_PI * k / kPlaneRays;
     if (!meetsShell(centre, std::cos(angle) * u + std::sin(angle) * w, kPlaneReach * radius)) return false;
   }
+  // A cross-section lies on one shell with open space just inside it (the tube's axis, reached through
+  // its opening) and just outside; a loop round the hole of a ring lies on one face of the ring's wall,
+  // and on the wall's side the shell runs on through the wall to its other face.
+  std::vector<double> lopsided;
+  for (const Vector3& p : loop) {
+    Vector3 away = p - centre;
+    away -= dot(away, normal) * normal;
+    if (norm(away) == 0) continue;
+    away = away.normalize();
+    lopsided.push_back(std::abs(toOpenSpace(p, away, kPlaneReach * radius) - toOpenSpace(p, -away, kPlaneReach * radius)));
+  }
+  if (lopsided.empty()) return false;
+  std::nth_element(lopsided.begin(), lopsided.begin() + lopsided.size() / 2, lopsided.end());
+  if (lopsided[lopsided.size() / 2] >= kWallCubes * cellSize) return false;
   // Directions spread evenly over the sphere (a Fibonacci lattice); a ray that leaves the grid escapes.
   int escaped = 0;
   for (int k = 0; k < kSpaceRays; k++) {

@@ -29,7 +29,9 @@ public:
   // flat, the shell all round its centroid in its plane, and the shell in most directions from its
   // centroid in space too (the flood's way in is a narrow cone). A loop round the rim of a hole or round
   // the hole of a handle is round, flat and enclosed in its plane as well, but a hemisphere or more of
-  // the directions from its centroid leads out.
+  // the directions from its centroid leads out. A loop round the hole of a ring whose wall is thick (a
+  // napkin ring) sees little open space from its centroid too, but it lies on a face of the wall: the
+  // shell is much deeper on the wall's side of the loop than on the other.
   bool enclosesCrossSection(const std::vector<geometrycentral::Vector3>& loop) const;
 
 private:
@@ -38,6 +40,9 @@ private:
   // Marches from p along the unit direction d (half a cube a step) for at most `reach`: whether it meets
   // a solid cube (the shell) before that and before it leaves the grid.
   bool meetsShell(const geometrycentral::Vector3& p, const geometrycentral::Vector3& d, double reach) const;
+  // How far from p along the unit direction d (a quarter cube a step) open space begins: a cube the flood
+  // reached or next to one, or the grid's border; `reach` if none is met before it.
+  double toOpenSpace(const geometrycentral::Vector3& p, const geometrycentral::Vector3& d, double reach) const;
 
   geometrycentral::Vector3 origin;
   double cellSize = 0;

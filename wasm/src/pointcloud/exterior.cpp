@@ -31,8 +31,9 @@ constexpr double kEscapeShare = 0.25;
 // ... and the shell about as deep on both sides of the loop: open space (a cube the flood reached, or
 // next to one) no more than this many cubes farther away on one side than on the other, a median over
 // the loop's points (a shell's faces lie on cube boundaries, so the two sides differ by up to a cube at
-// a point; over cross-sections of open tubes the median was at most half a cube, over loops round the
-// holes of rings with walls 7 noise deviations thick 1.25-4.25 cubes; docs/pointcloud.md).
+// a point; over cross-sections of open tubes the median was at most half a cube, 0.75 for one loop on a
+// made cylinder with noise of a tenth of its radius, over loops round the holes of rings with walls 7
+// noise deviations thick 1.25-4.25 cubes; docs/pointcloud.md).
 constexpr double kWallCubes = 1.0;
 
 } // namespace

@@ -149,16 +149,13 @@ bool ExteriorGrid::enclosesCrossSection(const std::vector<Vector3>& loop) const 
   }
   // A cross-section lies on one shell with open space just inside it (the tube's axis, reached through
   // its opening) and just outside; a loop round the hole of a ring lies on one face of the ring's wall,
-  // and on the wall's side the shell runs on through the wall to its other face.
+  // and on the wall's side the shell runs on through the wall to its other face. (Round and flat, every
+  // point lies well away from the centroid within the loop's plane.)
   std::vector<double> lopsided;
   for (const Vector3& p : loop) {
-    Vector3 away = p - centre;
-    away -= dot(away, normal) * normal;
-    if (norm(away) == 0) continue;
-    away = away.normalize();
+    const Vector3 away = (p - centre - dot(p - centre, normal) * normal).normalize();
     lopsided.push_back(std::abs(toOpenSpace(p, away, kPlaneReach * radius) - toOpenSpace(p, -away, kPlaneReach * radius)));
   }
-  if (lopsided.empty()) return false;
   std::nth_element(lopsided.begin(), lopsided.begin() + lopsided.size() / 2, lopsided.end());
   if (lopsided[lopsided.size() / 2] >= kWallCubes * cellSize) return false;
   // Directions spread evenly over the sphere (a Fibonacci lattice); a ray that leaves the grid escapes.

@@ -21,6 +21,7 @@
 //   void fitRadii(SkeletonGraph& graph)         node radii fitted to the shape around the final skeleton
 
 #include "cscd/bands.h"
+#include "cscd/filled_cycles.h"
 #include "cscd/graph.h"
 #include "cscd/measures.h"
 #include "cscd/options.h"
@@ -172,7 +173,8 @@ public:
   // Sources done: their candidates taken.
   Progress progress() const { return {drawn.size(), done ? drawn.size() : total(), done}; }
 
-  // Stage 2 (after the remaining sources of stage 1): prune, pack, regions, graph, clique to star.
+  // Stage 2 (after the remaining sources of stage 1): prune, pack, regions, graph, clique to star, bands,
+  // and cycles that bound no hole opened.
   Skeleton finish() {
     while (!done) step(1);
     Skeleton skeleton;
@@ -223,6 +225,7 @@ public:
       solid[r] = packed[r]->closed;
     }
     skeleton.vertexToNode = refineIntoBands(graph, regions, realization.samples(), width, solid, inside);
+    openFilledCycles(graph, inside);
     realization.fitRadii(graph);
     clock.lap("bands");
     return skeleton;

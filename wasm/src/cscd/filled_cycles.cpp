@@ -1,0 +1,93 @@
+#include "cscd/filled_cycles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <queue>
+
+using geometrycentral::Vector3;
+
+namespace cscd {
+namespace {
+
+// Samples of the cone from the centroid to each point, at these shares of the way (the points
+// themselves are on the skeleton, inside by construction).
+constexpr double kConeSteps[] = {0, 0.25, 0.5, 0.75};
+
+constexpr size_t kNone = std::numeric_limits<size_t>::max();
+
+// The nodes of the shortest path from `from` to `to` over the graph without edge `skipped`, in order;
+// empty when there is none.
+std::vector<size_t> shortestOtherPath(const SkeletonGraph& graph, const std::vector<std::vector<size_t>>& edgesAt, size_t skipped,
+                                      size_t from, size_t to) {
+  std::vector<double> distance(graph.nodes.size(), INFINITY);
+  std::vector<size_t> previous(graph.nodes.size(), kNone);
+  using Entry = std::pair<double, size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  distance[from] = 0;
+  queue.push({0, from});
+  while (!queue.empty()) {
+    const auto [d, node] = queue.top();
+    queue.pop();
+    if (node == to) break;
+    if (d > distance[node]) continue;
+    for (size_t e : edgesAt[node]) {
+      if (e == skipped) continue;
+      const size_t next = graph.edges[e][0] == node ? graph.edges[e][1] : graph.edges[e][0];
+      const double through = d + norm(graph.nodes[next] - graph.nodes[node]);
+      if (through < distance[next]) {
+        distance[next] = through;
+        previous[next] = node;
+        queue.push({through, next});
+      }
+    }
+  }
+  std::vector<size_t> path;
+  if (previous[to] == kNone) return path;
+  for (size_t node = to; node != kNone; node = previous[node]) path.push_back(node);
+  return path;
+}
+
+bool diskInside(const std::vector<Vector3>& cycle, const std::function<bool(const Vector3&)>& inside) {
+  Vector3 centroid{0, 0, 0};
+  for (const Vector3& p : cycle) centroid += p;
+  centroid /= double(cycle.size());
+  for (double t : kConeSteps)
+    for (size_t i = 0; i < cycle.size(); i++) {
+      const Vector3 corner = cycle[i], middle = (cycle[i] + cycle[(i + 1) % cycle.size()]) / 2;
+      if (!inside(centroid + t * (corner - centroid)) || !inside(centroid + t * (middle - centroid))) return false;
+    }
+  return true;
+}
+
+} // namespace
+
+void openFilledCycles(SkeletonGraph& graph, const std::function<bool(const Vector3&)>& inside) {
+  if (graph.cycleRank() == 0) return;
+  const auto length = [&](size_t e) { return norm(graph.nodes[graph.edges[e][0]] - graph.nodes[graph.edges[e][1]]); };
+  std::vector<size_t> order(graph.edges.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return length(a) > length(b); });
+  std::vector<std::vector<size_t>> edgesAt(graph.nodes.size());
+  for (size_t e = 0; e < graph.edges.size(); e++) {
+    edgesAt[graph.edges[e][0]].push_back(e);
+    edgesAt[graph.edges[e][1]].push_back(e);
+  }
+  std::vector<char> dropped(graph.edges.size(), 0);
+  for (size_t e : order) {
+    const std::vector<size_t> path = shortestOtherPath(graph, edgesAt, e, graph.edges[e][0], graph.edges[e][1]);
+    if (path.empty()) continue;
+    std::vector<Vector3> cycle;
+    for (size_t node : path) cycle.push_back(graph.nodes[node]);
+    if (!diskInside(cycle, inside)) continue;
+    dropped[e] = 1;
+    for (size_t end : graph.edges[e]) edgesAt[end].erase(std::find(edgesAt[end].begin(), edgesAt[end].end(), e));
+  }
+  std::vector<std::array<size_t, 2>> kept;
+  for (size_t e = 0; e < graph.edges.size(); e++)
+    if (!dropped[e]) kept.push_back(graph.edges[e]);
+  graph.edges = std::move(kept);
+}
+
+} // namespace cscd

@@ -211,7 +211,7 @@ export const STAGES: readonly StageDef[] = [
     group: 'shape',
     section: 'Sec. 4.2.4',
     caption:
-      'One node per band piece of a region (see Regions), then centred: each node moves to the centre of the sphere that best fits the surface it stands for (the vertices nearest to it along the skeleton: the colour you see when you click it), so it sits on the medial axis even in a bend, a taper or a blob; a tip node moves only across its edge and keeps its reach. Nodes are about a radius apart, drawn as spheres a quarter of their radius (the tube that best fits the surface around them); edges join pieces that touch, and where three or more regions meet a branch node joins them. Bumps and end caps shorter than their branch’s radius stay in it. The mesh is drawn see-through.',
+      'One node per band piece of a region (see Regions), then centred: each node moves to the centre of the sphere that best fits the surface it stands for (the vertices nearest to it along the skeleton: the colour you see when you click it), so it sits on the medial axis even in a bend, a taper or a blob; a tip node moves only across its edge and keeps its reach. Nodes are about a radius apart, drawn as spheres a quarter of their radius (the tube that best fits the surface around them); edges join pieces that touch, and where three or more regions meet a branch node joins them. Bumps and end caps shorter than their branch’s radius stay in it. A cycle whose disk lies inside the shape closes no hole and is opened at its longest edge, so the cycles left are handles. The mesh is drawn see-through.',
     layers: ['sk-edges', 'sk-nodes', 'sk-highlight', 'sk-region'],
     legend: [
       { layer: 'sk-nodes', label: 'node', color: COLORS.node },

@@ -225,6 +225,8 @@ public:
       solid[r] = packed[r]->closed;
     }
     skeleton.vertexToNode = refineIntoBands(graph, regions, realization.samples(), width, solid, inside);
+    // On the final graph, not on the region graph where such cycles arise: its cone is then sampled between
+    // the centred nodes along the cycle, not between a few region centroids.
     openFilledCycles(graph, inside);
     realization.fitRadii(graph);
     clock.lap("bands");

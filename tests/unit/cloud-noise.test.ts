@@ -340,6 +340,22 @@ describe('noisy clouds', () => {
     }
   });
 
+  it('opens a cycle that an edge through the air between two twigs closed, and keeps one piece', () => {
+    // At n = 40, seeds 1 and 9 (of 1-12), the whorls' skeleton had one cycle, closed by the same edge 0.32
+    // long between nodes of radii 0.047 and 0.01, whose farthest point lies 0.15 (3.2 times the larger radius)
+    // from every point: it leaves the shape and is dropped (docs/skeleton.md, "Cycles through the air").
+    const whorls = core.openCloud(readCloud('tree_hs_whorls.ply'));
+    try {
+      for (const seed of [1, 9]) {
+        const skeleton = whorls.skeleton({ n: 40, seed });
+        const topology = graphTopology(skeleton.nodes.length / 3, skeleton.edges);
+        expect([seed, topology.cycleRank, topology.components]).toEqual([seed, 0, 1]);
+      }
+    } finally {
+      whorls.dispose();
+    }
+  });
+
   it('follows the twigs of a whole tree scan into its crown, where they graze each other and bend', () => {
     // In the crown the twigs cross and touch: a leaf band piece that touched any piece but its neighbour
     // joined the neighbour, which then did the same, until one node on a branch stood for a whole stretch

@@ -21,13 +21,13 @@
 //   void fitRadii(SkeletonGraph& graph)         node radii fitted to the shape around the final skeleton
 
 #include "cscd/bands.h"
-#include "cscd/filled_cycles.h"
 #include "cscd/graph.h"
 #include "cscd/measures.h"
 #include "cscd/options.h"
 #include "cscd/pack.h"
 #include "cscd/regions.h"
 #include "cscd/stage_clock.h"
+#include "cscd/stray_cycles.h"
 
 #include <algorithm>
 #include <chrono>
@@ -229,6 +229,7 @@ public:
     // the centred nodes along the cycle, not between a few region centroids.
     openFilledCycles(graph, inside);
     realization.fitRadii(graph);
+    if (openCyclesThroughAir(graph, realization.samples().positions)) realization.fitRadii(graph);
     clock.lap("bands");
     return skeleton;
   }

@@ -15,10 +15,11 @@ namespace {
 // themselves are on the skeleton, inside by construction).
 constexpr double kConeSteps[] = {0, 0.25, 0.5, 0.75};
 
-// Measured (docs/skeleton.md, "Cycles through the air"): on the 57 cloud and 92 mesh skeletons whose
-// cycles go round real holes, no point of an edge on a cycle lies farther than 1.68 times its nodes'
-// larger radius from the shape (a noisy hanger's chord across its ring's wire; meshes at most 1.20); the
-// tree scans' stray cycles reach 3.05-12.96 at five of six runs (1.80 at the sixth).
+// Measured (docs/skeleton.md, "Cycles through the air"): on 57 cloud and 92 mesh skeletons with cycles
+// round real holes (and a noisy cloud's rings the noise joins), no point of an edge on a cycle lies
+// farther than 1.68 times its nodes' larger radius from the shape (a noisy hanger's chord across its
+// ring's wire; meshes at most 1.20); the tree scans' stray cycles reach 3.05-12.96 at five of six runs
+// (1.80 at the sixth).
 constexpr double kAirInRadii = 2.5;
 // Where along an edge it is tested for air (its ends are nodes, within the shape).
 constexpr double kEdgeSteps[] = {0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875};

@@ -2,7 +2,10 @@
 // neighbourhood graph (pygel3d, the baseline people can run on points), against pc-skeletor's Laplacian-based
 // contraction on the cloud (a tree by construction) and against CSCD-M on the mesh the cloud was sampled from.
 //
-//   npm run bench:clouds [-- [--clouds a,b] [--timeout S] [--cpu N] [--no-build]]
+//   npm run bench:clouds [-- [--clouds a,b] [--sampled] [--methods cscd-pc,cscd-m,...] [--timeout S] [--cpu N] [--no-build]]
+//
+// `--sampled` runs on clouds sampled from the shared meshes no shared cloud comes from (SAMPLED below, made
+// once into .deps/bench/sampled/) instead of the shared clouds; `--methods` runs only those named.
 //
 // Every method runs in its own process pinned to one core (bench/process.ts), with its default options.
 // Each skeleton is scored by the paper's reconstruction error against the source mesh (`core.evaluate`,
@@ -29,7 +32,18 @@ import { COMPILED_CORE, repoRoot, runPinned, shell, skeletorPython, venvPython, 
 import { claimResultName } from './result-name.ts';
 
 const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
-const cloudFolder = path.join(sharedData, 'pointclouds');
+const sharedClouds = path.join(sharedData, 'pointclouds');
+const sampledClouds = path.join(repoRoot, '.deps', 'bench', 'sampled');
+/**
+ * `--sampled`: clouds of the shared meshes that no shared cloud comes from, sampled as the shared ones were
+ * (scripts/sample-cloud.ts: 20,000 points, face normals, or noise of 0.5% of the diagonal and none), so that
+ * what is tuned to the shared clouds shows (docs/pointcloud.md, "Clouds from other meshes": these seeds).
+ */
+const SAMPLED: ReadonlyArray<{ mesh: string; noise: number; seed: number }> = [
+  ...['two_torus', 'dtorus', 'rings', 'spider', 'dolphin', 'wolf', 'elk', 'cheburashka', 'spot', 'wrench', 'hanger', 'bunny', 'warrior',
+    'thingi10k_37361_linkCupBase'].map((mesh, i) => ({ mesh, noise: 0, seed: i + 1 })),
+  ...['two_torus', 'dtorus', 'spider', 'wolf', 'hanger'].map((mesh, i) => ({ mesh, noise: 0.5, seed: i + 15 })),
+];
 const resultsDir = path.join(repoRoot, 'bench', 'results');
 const METHODS = ['cscd-pc', 'msls-graph', 'skeletor', 'cscd-m', 'cscd-m-dense'] as const;
 type Method = (typeof METHODS)[number];
@@ -58,6 +72,20 @@ function sourceMesh(cloudFile: string): string | null {
   const stem = path.basename(cloudFile, '.ply').replace(/_(clean|noise[\d.]+|nonuniform|gel_pts)$/, '');
   const mesh = path.join(sharedData, 'meshes', `${stem}.ply`);
   return existsSync(mesh) ? mesh : null;
+}
+
+/** The `--sampled` clouds (those `wanted`, or all) made where missing, by scripts/sample-cloud.ts. */
+function sampleClouds(wanted: string[] | undefined): void {
+  mkdirSync(sampledClouds, { recursive: true });
+  for (const { mesh, noise, seed } of SAMPLED) {
+    const label = `${mesh}_${noise > 0 ? `noise${noise}` : 'clean'}`;
+    const file = path.join(sampledClouds, `${label}.ply`);
+    if (existsSync(file) || (wanted && !wanted.includes(label))) continue;
+    process.stdout.write(`sampling ${label} from ${mesh}.ply (seed ${seed})\n`);
+    const made = spawnSync(process.execPath, ['--import', 'tsx', 'scripts/sample-cloud.ts', path.join(sharedData, 'meshes', `${mesh}.ply`), file,
+      '--noise', String(noise), '--seed', String(seed)], { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
+    if (made.status !== 0) throw new Error(`scripts/sample-cloud.ts failed on ${mesh}.ply`);
+  }
 }
 
 interface Row {
@@ -96,11 +124,15 @@ function score(core: Core, row: Row, mesh: MeshArrays | null, cloud: CloudArrays
   }
 }
 
-function markdown(rows: Row[], machine: string, argv: string[]): string {
+function markdown(rows: Row[], machine: string, argv: string[], sampled: boolean): string {
   const lines = [
     '# Point-cloud bench: CSCD-PC, MSLS on the neighbourhood graph, pc-skeletor, CSCD-M on the source mesh (as given and at the cloud\'s resolution)',
     '',
     machine,
+    '',
+    sampled
+      ? 'Clouds: sampled from the shared meshes that no shared cloud comes from, as the shared clouds were (`scripts/sample-cloud.ts`, 20,000 points with face normals, or noise of 0.5% of the diagonal; the seeds of docs/pointcloud.md, "Clouds from other meshes").'
+      : 'Clouds: the shared ones (`../shared/data/pointclouds/`).',
     '',
     `Options: \`npm run bench:clouds -- ${argv.join(' ')}\`. Every method in its own process pinned to one core, default options `
       + '(CSCD-PC and CSCD-M: `n = auto`; MSLS: pygel3d\'s `MSLS_skeleton_and_map` on the edges of the cloud\'s neighbourhood graph, '
@@ -135,16 +167,21 @@ function markdown(rows: Row[], machine: string, argv: string[]): string {
     return r.run.seconds && other?.run.seconds ? [r.run.seconds / other.run.seconds] : [];
   });
   const topology = of('cscd-pc').filter((r) => r.genus !== null && r.cycles !== null);
-  lines.push('', '| summary | value |', '| --- | --- |',
-    `| CSCD-PC clouds with cycles = genus of the source | ${topology.filter((r) => r.cycles === r.genus).length} of ${topology.length} |`,
-    `| MSLS (graph) clouds with cycles = genus of the source | ${of('msls-graph').filter((r) => r.genus !== null && r.cycles === r.genus).length} of ${of('msls-graph').filter((r) => r.genus !== null && r.cycles !== null).length} |`,
-    `| error vs mesh, CSCD-PC / CSCD-M: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'cscd-m', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'cscd-m', 'againstMesh')))}) |`,
-    `| error vs mesh, CSCD-PC / MSLS on the graph: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'msls-graph', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'msls-graph', 'againstMesh')))}) |`,
-    `| seconds, CSCD-PC / CSCD-M: median | ${num(median(ratios('cscd-pc', 'cscd-m', 'seconds')))} |`,
-    `| seconds, CSCD-PC / CSCD-M at the cloud's resolution (cscd-m-dense where there is one, else cscd-m): median | ${num(median(atResolution))} |`,
-    `| error vs mesh, CSCD-PC / pc-skeletor: geometric mean (median) | ${num(geometricMean(ratios('cscd-pc', 'skeletor', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'skeletor', 'againstMesh')))}) |`,
-    `| seconds, CSCD-PC / MSLS on the graph: median | ${num(median(ratios('cscd-pc', 'msls-graph', 'seconds')))} |`,
-    `| seconds, CSCD-PC / pc-skeletor: median | ${num(median(ratios('cscd-pc', 'skeletor', 'seconds')))} |`);
+  const mslsTopology = of('msls-graph').filter((r) => r.genus !== null && r.cycles !== null);
+  const ran = (method: Method) => of(method).length > 0;
+  // Rows only for the methods that ran (`--methods`).
+  const summary: [boolean, string, string][] = [
+    [ran('cscd-pc'), 'CSCD-PC clouds with cycles = genus of the source', `${topology.filter((r) => r.cycles === r.genus).length} of ${topology.length}`],
+    [ran('msls-graph'), 'MSLS (graph) clouds with cycles = genus of the source', `${mslsTopology.filter((r) => r.cycles === r.genus).length} of ${mslsTopology.length}`],
+    [ran('cscd-m'), 'error vs mesh, CSCD-PC / CSCD-M: geometric mean (median)', `${num(geometricMean(ratios('cscd-pc', 'cscd-m', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'cscd-m', 'againstMesh')))})`],
+    [ran('msls-graph'), 'error vs mesh, CSCD-PC / MSLS on the graph: geometric mean (median)', `${num(geometricMean(ratios('cscd-pc', 'msls-graph', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'msls-graph', 'againstMesh')))})`],
+    [ran('cscd-m'), 'seconds, CSCD-PC / CSCD-M: median', num(median(ratios('cscd-pc', 'cscd-m', 'seconds')))],
+    [ran('cscd-m'), 'seconds, CSCD-PC / CSCD-M at the cloud\'s resolution (cscd-m-dense where there is one, else cscd-m): median', num(median(atResolution))],
+    [ran('skeletor'), 'error vs mesh, CSCD-PC / pc-skeletor: geometric mean (median)', `${num(geometricMean(ratios('cscd-pc', 'skeletor', 'againstMesh')))} (${num(median(ratios('cscd-pc', 'skeletor', 'againstMesh')))})`],
+    [ran('msls-graph'), 'seconds, CSCD-PC / MSLS on the graph: median', num(median(ratios('cscd-pc', 'msls-graph', 'seconds')))],
+    [ran('skeletor'), 'seconds, CSCD-PC / pc-skeletor: median', num(median(ratios('cscd-pc', 'skeletor', 'seconds')))],
+  ];
+  lines.push('', '| summary | value |', '| --- | --- |', ...summary.filter(([shown]) => shown).map(([, what, value]) => `| ${what} | ${value} |`));
   return `${lines.join('\n')}\n`;
 }
 
@@ -152,6 +189,8 @@ async function main(): Promise<void> {
   const { values } = parseArgs({
     options: {
       clouds: { type: 'string' },
+      sampled: { type: 'boolean', default: false },
+      methods: { type: 'string', default: METHODS.join(',') },
       timeout: { type: 'string', default: '1200' },
       cpu: { type: 'string', default: '1' },
       'no-build': { type: 'boolean', default: false },
@@ -159,23 +198,32 @@ async function main(): Promise<void> {
   });
   const timeout = Number(values.timeout), cpu = Number(values.cpu);
   const wanted = values.clouds?.split(',').map((c) => c.replace(/\.ply$/, ''));
+  const methods = values.methods.split(',') as Method[];
+  const unknown = methods.filter((m) => !METHODS.includes(m));
+  if (unknown.length) throw new Error(`unknown method ${unknown.join(', ')}; the methods are ${METHODS.join(', ')}`);
+  if (methods.includes('msls-graph') && !methods.includes('cscd-pc')) throw new Error('msls-graph runs on the graph cscd-pc writes: add cscd-pc');
+  const cloudFolder = values.sampled ? sampledClouds : sharedClouds;
+  if (values.sampled) sampleClouds(wanted);
   const clouds = readdirSync(cloudFolder).filter((f) => f.endsWith('.ply') && (!wanted || wanted.includes(f.replace(/\.ply$/, '')))).sort();
   if (!values['no-build']) {
     const built = spawnSync('bash', ['scripts/build-wasm.sh'], { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
     if (built.status !== 0) throw new Error('scripts/build-wasm.sh failed');
   }
-  const bench = spawnSync('bash', ['bench/setup.sh', 'msls', 'skeletor'], { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
-  if (bench.status !== 0) throw new Error('bench/setup.sh msls skeletor failed');
+  const baselines = (['msls', 'skeletor'] as const).filter((b) => methods.includes(b === 'msls' ? 'msls-graph' : 'skeletor'));
+  if (baselines.length) {
+    const bench = spawnSync('bash', ['bench/setup.sh', ...baselines], { cwd: repoRoot, stdio: ['ignore', 'inherit', 'inherit'] });
+    if (bench.status !== 0) throw new Error(`bench/setup.sh ${baselines.join(' ')} failed`);
+  }
 
   mkdirSync(resultsDir, { recursive: true });
   const name = claimResultName(resultsDir, `${new Date().toISOString().slice(0, 10)}-clouds`, ['md']);
   const runDir = path.join(repoRoot, '.deps', 'bench', 'runs', name);
   mkdirSync(runDir, { recursive: true });
-  const pygel = shell(venvPython, ['-c', 'from importlib.metadata import version; print(version("PyGEL3D"))']);
+  const pygel = methods.includes('msls-graph') ? shell(venvPython, ['-c', 'from importlib.metadata import version; print(version("PyGEL3D"))']) : null;
   const cpuName = /model name\s*:\s*(.*)/.exec(readFileSync('/proc/cpuinfo', 'utf8'))?.[1] ?? 'unknown CPU';
   const machine = `Run on ${new Date().toISOString().replace(/\.\d+Z$/, 'Z')}, commit ${shell('git', ['rev-parse', '--short', 'HEAD'])}`
     + `${shell('git', ['status', '--porcelain', '--untracked-files=no']) ? ' (with uncommitted changes in the work tree)' : ''}. Machine: ${os.cpus().length} cores, ${cpuName}; `
-    + `Node ${process.version}, pygel3d ${pygel}; load average ${os.loadavg().map((x) => x.toFixed(2)).join(' ')} at the start.`;
+    + `Node ${process.version}${pygel ? `, pygel3d ${pygel}` : ''}; load average ${os.loadavg().map((x) => x.toFixed(2)).join(' ')} at the start.`;
 
   const core = await loadCoreNode();
   const rows: Row[] = [];
@@ -196,19 +244,24 @@ async function main(): Promise<void> {
 
     const graph = path.join(runDir, `${label}.graph.json`);
     const cscdFile = path.join(runDir, `${label}.cscd-pc.json`);
-    const runs: [Method, Run][] = [
-      ['cscd-pc', runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd-cloud.ts', cloudPath, cscdFile, '--graph', graph], cscdFile, path.join(runDir, `${label}.cscd-pc.log`), timeout, cpu)],
-    ];
-    const mslsFile = path.join(runDir, `${label}.msls-graph.obj`);
-    runs.push(['msls-graph', existsSync(graph)
-      ? runPinned([venvPython, 'bench/runners/gel.py', 'msls', '--graph', graph, mslsFile], mslsFile, path.join(runDir, `${label}.msls-graph.log`), timeout, cpu)
-      : { status: 'failed', seconds: null, reason: 'no neighbourhood graph (CSCD-PC failed)', file: mslsFile }]);
-    const skeletorFile = path.join(runDir, `${label}.skeletor.obj`);
-    runs.push(['skeletor', runPinned([skeletorPython, 'bench/runners/skeletor.py', cloudPath, skeletorFile], skeletorFile, path.join(runDir, `${label}.skeletor.log`), timeout, cpu)]);
+    const runs: [Method, Run][] = [];
+    if (methods.includes('cscd-pc')) {
+      runs.push(['cscd-pc', runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd-cloud.ts', cloudPath, cscdFile, '--graph', graph], cscdFile, path.join(runDir, `${label}.cscd-pc.log`), timeout, cpu)]);
+    }
+    if (methods.includes('msls-graph')) {
+      const mslsFile = path.join(runDir, `${label}.msls-graph.obj`);
+      runs.push(['msls-graph', existsSync(graph)
+        ? runPinned([venvPython, 'bench/runners/gel.py', 'msls', '--graph', graph, mslsFile], mslsFile, path.join(runDir, `${label}.msls-graph.log`), timeout, cpu)
+        : { status: 'failed', seconds: null, reason: 'no neighbourhood graph (CSCD-PC failed)', file: mslsFile }]);
+    }
+    if (methods.includes('skeletor')) {
+      const skeletorFile = path.join(runDir, `${label}.skeletor.obj`);
+      runs.push(['skeletor', runPinned([skeletorPython, 'bench/runners/skeletor.py', cloudPath, skeletorFile], skeletorFile, path.join(runDir, `${label}.skeletor.log`), timeout, cpu)]);
+    }
     // CSCD-M at the cloud's resolution: the source mesh subdivided `levels` times (none: the mesh as given is nearest).
     const levels = mesh ? levelsNear(mesh.positions.length / 3, cloud.positions.length / 3) : 0;
     const denseVertices = levels > 0 ? refine(mesh!, levels).positions.length / 3 : 0;
-    if (meshPath) {
+    if (meshPath && methods.includes('cscd-m')) {
       const meshLabel = path.basename(meshPath, '.ply');
       const meshFile = path.join(runDir, `${meshLabel}.cscd-m.json`);
       if (!meshRuns.has(meshPath)) {
@@ -216,12 +269,12 @@ async function main(): Promise<void> {
       }
       runs.push(['cscd-m', meshRuns.get(meshPath)!]);
       const denseKey = `${meshPath}@${levels}`;
-      if (levels > 0 && !meshRuns.has(denseKey)) {
+      if (levels > 0 && methods.includes('cscd-m-dense') && !meshRuns.has(denseKey)) {
         const denseFile = path.join(runDir, `${meshLabel}.cscd-m-dense${levels}.json`);
         meshRuns.set(denseKey, runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, denseFile, '--subdivide', String(levels)],
           denseFile, path.join(runDir, `${meshLabel}.cscd-m-dense${levels}.log`), timeout, cpu));
       }
-      if (levels > 0) runs.push(['cscd-m-dense', meshRuns.get(denseKey)!]);
+      if (levels > 0 && methods.includes('cscd-m-dense')) runs.push(['cscd-m-dense', meshRuns.get(denseKey)!]);
     }
     for (const [method, run] of runs) {
       const note = method === 'cscd-m-dense' ? `the mesh subdivided to ${denseVertices} vertices` : '';
@@ -230,7 +283,7 @@ async function main(): Promise<void> {
       rows.push(row);
       process.stdout.write(`  ${method.padEnd(10)} ${run.status === 'ok' ? `${run.seconds!.toFixed(1)} s, ${row.cycles} cycles, error vs mesh ${num(row.againstMesh)}, vs cloud ${num(row.againstCloud)}${reference ? `, reference ${num(row.toReference)}% of the diagonal` : ''}` : `${run.status} ${run.reason}`}\n`);
     }
-    writeFileSync(path.join(resultsDir, `${name}.md`), markdown(rows, machine, process.argv.slice(2)));
+    writeFileSync(path.join(resultsDir, `${name}.md`), markdown(rows, machine, process.argv.slice(2), values.sampled));
   }
   process.stdout.write(`bench:clouds: done; ${path.relative(repoRoot, path.join(resultsDir, name))}.md\n`);
 }

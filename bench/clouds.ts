@@ -2,10 +2,11 @@
 // neighbourhood graph (pygel3d, the baseline people can run on points), against pc-skeletor's Laplacian-based
 // contraction on the cloud (a tree by construction) and against CSCD-M on the mesh the cloud was sampled from.
 //
-//   npm run bench:clouds [-- [--clouds a,b] [--sampled] [--methods cscd-pc,cscd-m,...] [--timeout S] [--cpu N] [--no-build]]
+//   npm run bench:clouds [-- [--clouds a,b] [--sampled] [--methods cscd-pc,cscd-m,...] [--seed S] [--timeout S] [--cpu N] [--no-build]]
 //
 // `--sampled` runs on clouds sampled from the shared meshes no shared cloud comes from (SAMPLED below, made
-// once into .deps/bench/sampled/) instead of the shared clouds; `--methods` runs only those named.
+// once into .deps/bench/sampled/) instead of the shared clouds; `--methods` runs only those named; `--seed`
+// is CSCD-PC's and CSCD-M's (1, their default, unless given).
 //
 // Every method runs in its own process pinned to one core (bench/process.ts), with its default options.
 // Each skeleton is scored by the paper's reconstruction error against the source mesh (`core.evaluate`,
@@ -191,12 +192,14 @@ async function main(): Promise<void> {
       clouds: { type: 'string' },
       sampled: { type: 'boolean', default: false },
       methods: { type: 'string', default: METHODS.join(',') },
+      seed: { type: 'string', default: String(defaultCloudOptions.seed) },
       timeout: { type: 'string', default: '1200' },
       cpu: { type: 'string', default: '1' },
       'no-build': { type: 'boolean', default: false },
     },
   });
   const timeout = Number(values.timeout), cpu = Number(values.cpu);
+  const seed = ['--seed', values.seed];
   const wanted = values.clouds?.split(',').map((c) => c.replace(/\.ply$/, ''));
   const methods = values.methods.split(',') as Method[];
   const unknown = methods.filter((m) => !METHODS.includes(m));
@@ -246,7 +249,7 @@ async function main(): Promise<void> {
     const cscdFile = path.join(runDir, `${label}.cscd-pc.json`);
     const runs: [Method, Run][] = [];
     if (methods.includes('cscd-pc')) {
-      runs.push(['cscd-pc', runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd-cloud.ts', cloudPath, cscdFile, '--graph', graph], cscdFile, path.join(runDir, `${label}.cscd-pc.log`), timeout, cpu)]);
+      runs.push(['cscd-pc', runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd-cloud.ts', cloudPath, cscdFile, '--graph', graph, ...seed], cscdFile, path.join(runDir, `${label}.cscd-pc.log`), timeout, cpu)]);
     }
     if (methods.includes('msls-graph')) {
       const mslsFile = path.join(runDir, `${label}.msls-graph.obj`);
@@ -265,13 +268,13 @@ async function main(): Promise<void> {
       const meshLabel = path.basename(meshPath, '.ply');
       const meshFile = path.join(runDir, `${meshLabel}.cscd-m.json`);
       if (!meshRuns.has(meshPath)) {
-        meshRuns.set(meshPath, runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, meshFile], meshFile, path.join(runDir, `${meshLabel}.cscd-m.log`), timeout, cpu));
+        meshRuns.set(meshPath, runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, meshFile, ...seed], meshFile, path.join(runDir, `${meshLabel}.cscd-m.log`), timeout, cpu));
       }
       runs.push(['cscd-m', meshRuns.get(meshPath)!]);
       const denseKey = `${meshPath}@${levels}`;
       if (levels > 0 && methods.includes('cscd-m-dense') && !meshRuns.has(denseKey)) {
         const denseFile = path.join(runDir, `${meshLabel}.cscd-m-dense${levels}.json`);
-        meshRuns.set(denseKey, runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, denseFile, '--subdivide', String(levels)],
+        meshRuns.set(denseKey, runPinned([process.execPath, ...COMPILED_CORE, '--import', 'tsx', 'bench/runners/cscd.ts', meshPath, denseFile, '--subdivide', String(levels), ...seed],
           denseFile, path.join(runDir, `${meshLabel}.cscd-m-dense${levels}.log`), timeout, cpu));
       }
       if (levels > 0 && methods.includes('cscd-m-dense')) runs.push(['cscd-m-dense', meshRuns.get(denseKey)!]);

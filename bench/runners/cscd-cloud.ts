@@ -2,7 +2,7 @@
 // WASM core and calls as `cscd skeleton <cloud>`, in a process of its own so that it is timed and pinned
 // like the baseline.
 //
-//   node --import tsx bench/runners/cscd-cloud.ts <cloud> <skeleton.json> [--graph <graph.json>]
+//   node --import tsx bench/runners/cscd-cloud.ts <cloud> <skeleton.json> [--graph <graph.json>] [--seed S]
 //
 // Writes the skeleton as our JSON and prints, as the last line of stdout, {"seconds": S, "memoryMB": M}:
 // the wall time of openCloud (neighbours, tufted triangulation, heat solver) and skeleton, from the
@@ -16,13 +16,16 @@ import { checkCloud } from '../../lib/io/cloud-check.ts';
 import { parseShape } from '../../lib/io/index.ts';
 import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
 
-const { positionals, values } = parseArgs({ allowPositionals: true, options: { graph: { type: 'string' } } });
+const { positionals, values } = parseArgs({
+  allowPositionals: true,
+  options: { graph: { type: 'string' }, seed: { type: 'string', default: String(defaultCloudOptions.seed) } },
+});
 const [cloudPath, outPath] = positionals;
-if (!cloudPath || !outPath) {
-  process.stderr.write('usage: node --import tsx bench/runners/cscd-cloud.ts <cloud> <skeleton.json> [--graph <graph.json>]\n');
+const options = { ...defaultCloudOptions, seed: Number(values.seed) };
+if (!cloudPath || !outPath || !Number.isInteger(options.seed)) {
+  process.stderr.write('usage: node --import tsx bench/runners/cscd-cloud.ts <cloud> <skeleton.json> [--graph <graph.json>] [--seed S]\n');
   process.exit(2);
 }
-const options = defaultCloudOptions;
 const parsed = parseShape(await readFile(cloudPath), cloudPath);
 if (parsed.kind !== 'cloud') throw new Error(`${cloudPath} is a mesh, not a point cloud`);
 const { cloud: checked } = checkCloud(parsed, options.neighbours);

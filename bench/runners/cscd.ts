@@ -2,7 +2,7 @@
 // calls as `cscd skeleton` (cli/commands/skeleton.ts), in a process of its own so that it is timed and
 // pinned like the baselines.
 //
-//   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R] [--subdivide L]
+//   node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R] [--subdivide L] [--seed S]
 //
 // --subdivide L runs on the mesh after L levels of midpoint subdivision (lib/mesh/refine.ts: the same
 // surface, four times the faces a level), made before the clock starts: the point-cloud bench's CSCD-M at
@@ -32,13 +32,14 @@ const { positionals, values } = parseArgs({
     workers: { type: 'string', default: '1' },
     'draw-ahead': { type: 'string', default: String(defaultOptions.drawAhead) },
     subdivide: { type: 'string', default: '0' },
+    seed: { type: 'string', default: String(defaultOptions.seed) },
   },
 });
 const [meshPath, outPath] = positionals;
 const workers = Number(values.workers), levels = Number(values.subdivide);
-const options = { ...defaultOptions, drawAhead: Number(values['draw-ahead']) };
-if (!meshPath || !outPath || !(workers >= 1) || !(options.drawAhead >= 1) || !Number.isInteger(levels) || levels < 0) {
-  process.stderr.write('usage: node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R] [--subdivide L]\n');
+const options = { ...defaultOptions, drawAhead: Number(values['draw-ahead']), seed: Number(values.seed) };
+if (!meshPath || !outPath || !(workers >= 1) || !(options.drawAhead >= 1) || !Number.isInteger(levels) || levels < 0 || !Number.isInteger(options.seed)) {
+  process.stderr.write('usage: node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R] [--subdivide L] [--seed S]\n');
   process.exit(2);
 }
 

@@ -4,7 +4,7 @@
 //
 //   npm run bench:clouds [-- [--clouds a,b] [--sampled] [--methods cscd-pc,cscd-m,...] [--seed S] [--timeout S] [--cpu N] [--no-build]]
 //
-// `--sampled` runs on clouds sampled from the shared meshes no shared cloud comes from (SAMPLED below, made
+// `--sampled` runs on clouds sampled from the shared meshes no shared cloud comes from (SAMPLED, made
 // once into .deps/bench/sampled/) instead of the shared clouds; `--methods` runs only those named; `--seed`
 // is CSCD-PC's and CSCD-M's (1, their default, unless given).
 //
@@ -37,7 +37,7 @@ const sharedClouds = path.join(sharedData, 'pointclouds');
 const sampledClouds = path.join(repoRoot, '.deps', 'bench', 'sampled');
 /**
  * `--sampled`: clouds of the shared meshes that no shared cloud comes from, sampled as the shared ones were
- * (scripts/sample-cloud.ts: 20,000 points, face normals, or noise of 0.5% of the diagonal and none), so that
+ * (scripts/sample-cloud.ts: 20,000 points with face normals, or with noise of 0.5% of the diagonal and no normals), so that
  * what is tuned to the shared clouds shows (docs/pointcloud.md, "Clouds from other meshes": these seeds).
  */
 const SAMPLED: ReadonlyArray<{ mesh: string; noise: number; seed: number }> = [

@@ -199,6 +199,7 @@ async function main(): Promise<void> {
     },
   });
   const timeout = Number(values.timeout), cpu = Number(values.cpu);
+  if (!Number.isInteger(Number(values.seed)) || Number(values.seed) < 0) throw new Error(`--seed must be a non-negative integer, got '${values.seed}'`);
   const seed = ['--seed', values.seed];
   const wanted = values.clouds?.split(',').map((c) => c.replace(/\.ply$/, ''));
   const methods = values.methods.split(',') as Method[];

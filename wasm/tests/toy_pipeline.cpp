@@ -152,6 +152,7 @@ public:
   }
 
   double resolution() const { return 1; }
+  bool noisy() const { return false; }
 
   std::vector<std::vector<size_t>> overlaps(const Selection<Candidate>& kept) const {
     std::vector<std::vector<size_t>> overlapping(kept.size());

@@ -819,4 +819,46 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
   return nodeOfElement;
 }
 
+bool mergeNoiseSpurs(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement, const Samples& samples) {
+  const size_t nodeCount = graph.nodes.size();
+  if (graph.radii.size() != nodeCount) return false;
+  std::vector<std::vector<uint32_t>> owned(nodeCount);
+  for (uint32_t v = 0; v < nodeOfElement.size(); v++) owned[nodeOfElement[v]].push_back(v);
+  Adjacency adj = adjacencyOf(graph);
+  std::vector<uint32_t> mergedInto(nodeCount, kNone);
+  bool any = false;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (uint32_t leaf = 0; leaf < nodeCount; leaf++) {
+      if (mergedInto[leaf] != kNone || adj[leaf].size() != 1) continue;
+      std::vector<uint32_t> chain{leaf};
+      uint32_t previous = leaf, at = *adj[leaf].begin();
+      while (adj[at].size() == 2) {
+        chain.push_back(at);
+        const uint32_t onward = *adj[at].begin() == previous ? *adj[at].rbegin() : *adj[at].begin();
+        previous = at;
+        at = onward;
+      }
+      if (adj[at].size() < 3) continue; // the piece is one path: its ends are the shape's
+      double reach = 0;
+      for (uint32_t c : chain)
+        for (uint32_t v : owned[c]) reach = std::max(reach, norm(samples.positions[v] - graph.nodes[at]));
+      if (!(reach < kBranchReach * graph.radii[at])) continue;
+      for (auto c = chain.rbegin(); c != chain.rend(); ++c) {
+        if (!contract(adj, at, *c)) break;
+        mergedInto[*c] = at;
+        owned[at].insert(owned[at].end(), owned[*c].begin(), owned[*c].end());
+        owned[*c].clear();
+        changed = any = true;
+      }
+    }
+  }
+  if (!any) return false;
+  keepUnmerged(graph, adj, mergedInto, nodeOfElement);
+  graph.weights.assign(graph.nodes.size(), 0);
+  for (size_t v = 0; v < nodeOfElement.size(); v++) graph.weights[nodeOfElement[v]] += samples.weights[v];
+  graph.radii.clear();
+  return true;
+}
+
 } // namespace cscd

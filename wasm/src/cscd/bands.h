@@ -39,4 +39,12 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
                                       const std::vector<double>& width, const std::vector<char>& solid,
                                       const std::function<bool(const geometrycentral::Vector3&)>& inside);
 
+// On a noisy cloud a packed separator may go round a bump of the noise, and its region makes a spur
+// that refineIntoBands keeps (a separator marks a feature there). Measured with the fitted radii, a leaf
+// branch none of whose elements lies farther from its junction's node than two of the junction's radii
+// (refineIntoBands' bump rule) is merged into the junction, separator or not. Needs the graph's radii;
+// clears them when it merges (they are fitted again). Returns whether a branch was merged.
+// (docs/pointcloud.md, "Spurs of the noise")
+bool mergeNoiseSpurs(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement, const Samples& samples);
+
 } // namespace cscd

@@ -18,6 +18,8 @@
 //   size_t sourceCount()                        how many elements sources are drawn from (a mesh's
 //                                               working copy may have fewer than the shape)
 //   bool inside(const Vector3& p)               whether p lies inside the shape (for closed separators)
+//   bool noisy()                                whether separators may go round the shape's noise (a noisy
+//                                               cloud): a separator then does not make a short leaf a feature
 //   void fitRadii(SkeletonGraph& graph)         node radii fitted to the shape around the final skeleton
 
 #include "cscd/bands.h"
@@ -230,6 +232,8 @@ public:
     openFilledCycles(graph, inside);
     realization.fitRadii(graph);
     if (openCyclesThroughAir(graph, realization.samples().positions)) realization.fitRadii(graph);
+    // Radii fitted again after a merge may leave another spur within its junction's two radii: until none is.
+    while (realization.noisy() && mergeNoiseSpurs(graph, skeleton.vertexToNode, realization.samples())) realization.fitRadii(graph);
     clock.lap("bands");
     return skeleton;
   }

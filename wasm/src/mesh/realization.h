@@ -52,6 +52,7 @@ public:
   // The vertices, their dual areas and the mesh edges.
   const Samples& samples() const { return vertexSamples; }
   bool inside(const geometrycentral::Vector3& p) const;
+  bool noisy() const { return false; }
   // Radii fitted to the surface around the final skeleton (tubeRadii), the same rule as for other tools'
   // skeletons: the mean distance to a whole region overestimates a long region's tube.
   void fitRadii(SkeletonGraph& graph) const;

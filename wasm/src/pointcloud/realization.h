@@ -39,6 +39,7 @@ public:
   const Samples& samples() const { return pointSamples; }
   size_t sourceCount() const { return pointSamples.positions.size(); }
   bool inside(const geometrycentral::Vector3& p) const { return cloud.inside(p); }
+  bool noisy() const { return cloud.neighbourhood().noisyCloud(); }
   void fitRadii(SkeletonGraph& graph) const;
 
 private:

@@ -112,6 +112,7 @@ struct IsRealization {
       std::is_same_v<decltype(std::declval<R&>().samples()), const Samples&> &&
       std::is_convertible_v<decltype(std::declval<R&>().sourceCount()), size_t> &&
       std::is_convertible_v<decltype(std::declval<R&>().inside(std::declval<const geometrycentral::Vector3&>())), bool> &&
+      std::is_convertible_v<decltype(std::declval<R&>().noisy()), bool> &&
       std::is_void_v<decltype(std::declval<R&>().fitRadii(std::declval<SkeletonGraph&>()))>;
 };
 

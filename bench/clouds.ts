@@ -29,7 +29,7 @@ import { boundingBoxDiagonal } from '../lib/io/repair.ts';
 import { parseSkeleton } from '../lib/io/skeleton.ts';
 import { refine } from '../lib/mesh/refine.ts';
 import { geometricMean, leafIndices, meanDistanceToSkeleton, median } from './metrics.ts';
-import { COMPILED_CORE, repoRoot, runPinned, shell, skeletorPython, venvPython, type Run } from './process.ts';
+import { COMPILED_CORE, repoRoot, runPinned, seedArgument, shell, skeletorPython, venvPython, type Run } from './process.ts';
 import { claimResultName } from './result-name.ts';
 
 const sharedData = path.resolve(repoRoot, '..', 'shared', 'data');
@@ -199,7 +199,7 @@ async function main(): Promise<void> {
     },
   });
   const timeout = Number(values.timeout), cpu = Number(values.cpu);
-  if (!Number.isInteger(Number(values.seed)) || Number(values.seed) < 0) throw new Error(`--seed must be a non-negative integer, got '${values.seed}'`);
+  if (seedArgument(values.seed) === null) throw new Error(`--seed: not a seed, '${values.seed}'`);
   const seed = ['--seed', values.seed];
   const wanted = values.clouds?.split(',').map((c) => c.replace(/\.ply$/, ''));
   const methods = values.methods.split(',') as Method[];

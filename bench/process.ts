@@ -4,6 +4,7 @@ import { execFileSync, spawnSync } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { OPTIONS, parseSpecText } from '../lib/core/options.ts';
 
 export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 export const venvPython = path.join(repoRoot, '.deps', 'bench-venv', 'bin', 'python');
@@ -18,6 +19,11 @@ export const skeletorPython = path.join(repoRoot, '.deps', 'skeletor-venv', 'bin
  * compiling takes about 2 s and is excluded, as loading the module and MSLS's compilation are).
  */
 export const COMPILED_CORE = ['--no-liftoff', '--no-wasm-lazy-compilation'];
+
+/** A `--seed` argument read by the option table's rule for the seed; null when it does not accept it. */
+export function seedArgument(text: string): number | null {
+  return parseSpecText(OPTIONS.find((o) => o.key === 'seed')!, text) as number | null;
+}
 
 /** One thread for every library that would start more (OpenMP in Eigen, BLAS under numpy). */
 const ONE_THREAD_ENV = {

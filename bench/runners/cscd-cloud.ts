@@ -15,17 +15,19 @@ import { defaultCloudOptions } from '../../lib/core/options.ts';
 import { checkCloud } from '../../lib/io/cloud-check.ts';
 import { parseShape } from '../../lib/io/index.ts';
 import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
+import { seedArgument } from '../process.ts';
 
 const { positionals, values } = parseArgs({
   allowPositionals: true,
   options: { graph: { type: 'string' }, seed: { type: 'string', default: String(defaultCloudOptions.seed) } },
 });
 const [cloudPath, outPath] = positionals;
-const options = { ...defaultCloudOptions, seed: Number(values.seed) };
-if (!cloudPath || !outPath || !Number.isInteger(options.seed)) {
+const seed = seedArgument(values.seed);
+if (!cloudPath || !outPath || seed === null) {
   process.stderr.write('usage: node --import tsx bench/runners/cscd-cloud.ts <cloud> <skeleton.json> [--graph <graph.json>] [--seed S]\n');
   process.exit(2);
 }
+const options = { ...defaultCloudOptions, seed };
 const parsed = parseShape(await readFile(cloudPath), cloudPath);
 if (parsed.kind !== 'cloud') throw new Error(`${cloudPath} is a mesh, not a point cloud`);
 const { cloud: checked } = checkCloud(parsed, options.neighbours);

@@ -25,6 +25,7 @@ import { runStage1 } from '../../lib/core/pool.ts';
 import { parseMesh } from '../../lib/io/index.ts';
 import { refine } from '../../lib/mesh/refine.ts';
 import { writeSkeletonJson } from '../../lib/io/skeleton.ts';
+import { seedArgument } from '../process.ts';
 
 const { positionals, values } = parseArgs({
   allowPositionals: true,
@@ -37,11 +38,12 @@ const { positionals, values } = parseArgs({
 });
 const [meshPath, outPath] = positionals;
 const workers = Number(values.workers), levels = Number(values.subdivide);
-const options = { ...defaultOptions, drawAhead: Number(values['draw-ahead']), seed: Number(values.seed) };
-if (!meshPath || !outPath || !(workers >= 1) || !(options.drawAhead >= 1) || !Number.isInteger(levels) || levels < 0 || !Number.isInteger(options.seed)) {
+const drawAhead = Number(values['draw-ahead']), seed = seedArgument(values.seed);
+if (!meshPath || !outPath || !(workers >= 1) || !(drawAhead >= 1) || !Number.isInteger(levels) || levels < 0 || seed === null) {
   process.stderr.write('usage: node --import tsx bench/runners/cscd.ts <mesh> <skeleton.json> [--workers K --draw-ahead R] [--subdivide L] [--seed S]\n');
   process.exit(2);
 }
+const options = { ...defaultOptions, drawAhead, seed };
 
 const mesh = refine(parseMesh(await readFile(meshPath), meshPath), levels);
 const core = await loadCoreNode();

@@ -225,6 +225,21 @@ bool contract(Adjacency& adj, uint32_t into, uint32_t from) {
   return true;
 }
 
+// The chain of degree-2 nodes from `leaf` into the graph, `leaf` first, as far as `through` lets it pass;
+// returns the node it stops at (a junction, another leaf, or one `through` refused).
+template <class Through>
+uint32_t walkFromLeaf(const Adjacency& adj, uint32_t leaf, std::vector<uint32_t>& chain, Through through) {
+  chain.assign(1, leaf);
+  uint32_t previous = leaf, at = *adj[leaf].begin();
+  while (adj[at].size() == 2 && through(at)) {
+    chain.push_back(at);
+    const uint32_t onward = *adj[at].begin() == previous ? *adj[at].rbegin() : *adj[at].begin();
+    previous = at;
+    at = onward;
+  }
+  return at;
+}
+
 // The node that `node` was merged into, through any chain of merges (itself if it was not merged).
 uint32_t mergedRoot(const std::vector<uint32_t>& mergedInto, uint32_t node) {
   while (mergedInto[node] != kNone) node = mergedInto[node];
@@ -723,14 +738,8 @@ std::vector<uint32_t> refineIntoBands(SkeletonGraph& graph, const Regions& regio
       }
       if (regionNode) continue;
       const double bandWidth = width[pieces.list[piecesOf[leaf][0]].region];
-      std::vector<uint32_t> chain{leaf};
-      uint32_t previous = leaf, at = next;
-      while (!isHub(at) && at >= regions.count && adj[at].size() == 2) {
-        chain.push_back(at);
-        const uint32_t onward = *adj[at].begin() == previous ? *adj[at].rbegin() : *adj[at].begin();
-        previous = at;
-        at = onward;
-      }
+      std::vector<uint32_t> chain;
+      const uint32_t at = walkFromLeaf(adj, leaf, chain, [&](uint32_t node) { return !isHub(node) && node >= regions.count; });
       double reach = 0, low = INFINITY, high = -INFINITY;
       for (uint32_t c : chain)
         for (uint32_t p : piecesOf[c])
@@ -831,14 +840,8 @@ bool mergeNoiseSpurs(SkeletonGraph& graph, std::vector<uint32_t>& nodeOfElement,
     changed = false;
     for (uint32_t leaf = 0; leaf < nodeCount; leaf++) {
       if (mergedInto[leaf] != kNone || adj[leaf].size() != 1) continue;
-      std::vector<uint32_t> chain{leaf};
-      uint32_t previous = leaf, at = *adj[leaf].begin();
-      while (adj[at].size() == 2) {
-        chain.push_back(at);
-        const uint32_t onward = *adj[at].begin() == previous ? *adj[at].rbegin() : *adj[at].begin();
-        previous = at;
-        at = onward;
-      }
+      std::vector<uint32_t> chain;
+      const uint32_t at = walkFromLeaf(adj, leaf, chain, [](uint32_t) { return true; });
       if (adj[at].size() < 3) continue; // the piece is one path: its ends are the shape's
       double reach = 0;
       for (uint32_t c : chain)

@@ -6,9 +6,10 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { CoreError, loadCoreNode, type Cloud, type CloudSeparatorStages, type Core } from '../../lib/core/node.ts';
+import { meshAsCloud } from '../../lib/cloud/from-mesh.ts';
 import { random } from '../../lib/core/random.ts';
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
-import { fixture } from '../paths.ts';
+import { fixture, sharedMesh } from '../paths.ts';
 
 function readCloud(name: string): ParsedCloud {
   const shape = parseShape(new Uint8Array(readFileSync(fixture('clouds', name))), path.basename(name));
@@ -28,6 +29,14 @@ function torusPoints(count: number, R: number, r: number, seed: number): { posit
     i++;
   }
   return { positions, normals };
+}
+
+/** Index of the point of `positions` (xyz) nearest to `at`. */
+function nearestPoint(positions: ArrayLike<number>, at: number[]): number {
+  let nearest = 0;
+  const distance = (p: number) => Math.hypot(positions[3 * p] - at[0], positions[3 * p + 1] - at[1], positions[3 * p + 2] - at[2]);
+  for (let p = 1; p < positions.length / 3; p++) if (distance(p) < distance(nearest)) nearest = p;
+  return nearest;
 }
 
 /** Neighbour lists of the cloud's graph. */
@@ -184,6 +193,31 @@ describe('the cut locus on a cloud', () => {
 });
 
 describe('the approximate loop on a cloud', () => {
+  it('goes round the leg behind which the fronts close in at a shallow angle, not round the body', () => {
+    // The spider's vertices as a cloud. From a source on the body beside a leg's base, the two halves of
+    // the front pass the leg and meet behind it running nearly side by side (their gradients 40-50° apart
+    // there): the fronts head into each other all the same, and CSCD-M on the mesh takes that point as its
+    // target. Requiring the gradients 90° apart skipped it, and the loop went round the body's rim from
+    // the far end of the body (length 1.06), the loop the spider's skeletons packed in place of its legs'.
+    const mesh = parseShape(new Uint8Array(readFileSync(sharedMesh('spider.ply'))), 'spider.ply');
+    if (mesh.kind !== 'mesh') throw new Error('spider.ply holds no mesh');
+    const points = meshAsCloud(mesh).cloud;
+    const cloud = core.openCloud(points);
+    try {
+      const source = nearestPoint(points.positions, [0.4577, 0.658, 0.3791]);
+      const legBase = [0.2957, 0.6276, 0.5049];
+      const stages = cloud.separatorStages(source);
+      expect(stages.status).toBe('ok');
+      expect(Math.hypot(...stages.targetPoint!.map((x, i) => x - legBase[i]))).toBeLessThan(0.02);
+      // Round the leg (some 0.18 about), not round the body (1.06).
+      expect(stages.length).toBeGreaterThan(0.1);
+      expect(stages.length).toBeLessThan(0.3);
+      expect(stages.centroidInside).toBe(true);
+    } finally {
+      cloud.dispose();
+    }
+  });
+
   it('winds once around the tube of a torus sampled with a seed, from any source', () => {
     const R = 1, r = 0.35;
     const torus = torusPoints(3000, R, r, 7);

@@ -94,9 +94,10 @@ describe('the skeleton of a cloud with strays', () => {
     const checked = skeletonOf(checkCloud(strays, 30).cloud);
     expect(checked.skeleton.nodes).toEqual(alone.skeleton.nodes);
     expect(checked.skeleton.edges).toEqual(alone.skeleton.edges);
-    // Measured: 0.0367 without strays, 0.336 with them kept (the step off).
+    // Measured: 0.0856 without strays, 0.237 with them kept (the step off); 0.0367 and 0.336 before clean
+    // clouds' targets took fronts that meet at a shallow angle (docs/pointcloud.md).
     const kept = skeletonOf(checkCloud(strays, 30, { outliers: false }).cloud);
-    expect(kept.reconError).toBeGreaterThan(3 * alone.reconError);
+    expect(kept.reconError).toBeGreaterThan(2 * alone.reconError);
   }, 60_000);
 });
 

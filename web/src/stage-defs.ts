@@ -140,7 +140,7 @@ export const STAGES: readonly StageDef[] = [
     cloud: {
       section: 'Sec. 4.1.3–4.1.4',
       caption:
-        'The target is the cut-locus point nearest to the source whose two incoming gradients are opposite (the two sides of a feature meet there). From it, two paths descend the distance along the neighbourhood graph on the two sides until they meet: together they go once around the part the target sits on.',
+        'The target is the cut-locus point nearest to the source where the fronts arriving from its two sides head into each other: the opposite gradients of the paper (the two sides of a feature meet there; on a clean cloud also at a shallow angle, as behind a leg; on a noisy one only at 90° or more, as most ridges of the noise are not). From it, two paths descend the distance along the neighbourhood graph on the two sides until they meet: together they go once around the part the target sits on.',
       click: PICK_POINT,
     },
   },

@@ -195,8 +195,8 @@ describe('the cut locus on a cloud', () => {
 describe('the approximate loop on a cloud', () => {
   it('goes round the leg behind which the fronts close in at a shallow angle, not round the body', () => {
     // The spider's vertices as a cloud. From a source on the body beside a leg's base, the two halves of
-    // the front pass the leg and meet behind it running nearly side by side (their gradients 40-50° apart
-    // there): the fronts head into each other all the same, and CSCD-M on the mesh takes that point as its
+    // the front pass the leg and meet behind it running nearly side by side (their gradients well under 90°
+    // apart there): the fronts head into each other all the same, and CSCD-M on the mesh takes that point as its
     // target. Requiring the gradients 90° apart skipped it, and the loop went round the body's rim from
     // the far end of the body (length 1.06), the loop the spider's skeletons packed in place of its legs'.
     const mesh = parseShape(new Uint8Array(readFileSync(sharedMesh('spider.ply'))), 'spider.ply');

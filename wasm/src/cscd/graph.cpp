@@ -28,7 +28,7 @@ bool between(const SeparatorFrame& m, const SeparatorFrame& a, const SeparatorFr
 }
 
 // A group of junction triangles is one branching where its junctions lie within a few radii of its
-// largest separator of their mean, or around a body whose middle lies deep inside (a ball with arms).
+// separators of their mean, or around a body whose middle lies deep inside (a ball with arms).
 // On a noisy cloud the packed loops go round the noise, their regions tile the surface, and the
 // triangles where three tiles meet chain over the whole shape: one group, whose star's spokes ran from
 // one hub across the shape to every tile. Such a group's junctions spread over many separator radii,
@@ -36,21 +36,29 @@ bool between(const SeparatorFrame& m, const SeparatorFrame& a, const SeparatorFr
 // regions or more of 37 clouds and 29 meshes; docs/skeleton.md, "Tilings"; spread in radii / in
 // depths): branchings 0.1-2.9 radii, but star8's eight arms around a ball 4.1-4.2 radii / 1.6 depths;
 // tilings 8.8 / 16 (armadillo_noise1.0, 70 regions), 15 / 92 (deer_noise1.0, 78), 4.9 / 76 (the noisy
-// hanger's strips, 74), and 4.3 / 28 around a thin-walled cup's hollow (5 regions).
-constexpr double kMaxSpreadInRadii = 4, kMaxSpreadInDepths = 10;
+// hanger's strips, 74), and 4.3 / 28 around a thin-walled cup's hollow (5 regions). A tiling that also
+// holds one large loop (round the body of a blob whose noisy surface the tiles cover) spreads over few
+// of its largest radius but many of its median one: branchings 0.1-10 median radii (the noisy wolf's
+// 9.3 at 10.6 depths), tilings with such a loop 22-25 (cheburashka at 0.75% noise, 35 and 56 regions);
+// docs/skeleton.md, "Tilings round one large loop".
+constexpr double kMaxSpreadInRadii = 4, kMaxSpreadInMedianRadii = 15, kMaxSpreadInDepths = 10;
 
 // surface: the shape's elements; the depth of a point is its distance to the nearest.
 bool tiling(const std::vector<Vector3>& places, const std::set<size_t>& members, const std::vector<SeparatorFrame>& separators,
             const std::vector<Vector3>& surface) {
-  double radius = 0;
+  std::vector<double> radii;
   for (size_t v : members)
-    if (v < separators.size()) radius = std::max(radius, separators[v].radius);
+    if (v < separators.size()) radii.push_back(separators[v].radius);
+  if (radii.empty()) return false;
+  std::sort(radii.begin(), radii.end());
+  const double largest = radii.back(), median = radii[radii.size() / 2];
   Vector3 mean{0, 0, 0};
   for (const Vector3& p : places) mean += p;
   mean /= double(places.size());
   double spread = 0;
   for (const Vector3& p : places) spread = std::max(spread, norm(p - mean));
-  if (!(radius > 0 && spread > kMaxSpreadInRadii * radius)) return false;
+  if (!(largest > 0 && (spread > kMaxSpreadInRadii * largest || (median > 0 && spread > kMaxSpreadInMedianRadii * median))))
+    return false;
   double depth = INFINITY;
   for (const Vector3& p : surface) depth = std::min(depth, norm(p - mean));
   return spread > kMaxSpreadInDepths * depth;

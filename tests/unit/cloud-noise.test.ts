@@ -272,10 +272,11 @@ describe('noisy clouds', () => {
 
   it('joins tiles by a tree where one large loop among them spans the body: no hub on the noisy cheburashka', () => {
     // cheburashka.ply (a round body and head, two flat ears) sampled with noise of 0.75% of the diagonal:
-    // the tiles round the noise chain into one group of 35-60 regions, but one loop round the body
-    // (radius 0.18-0.21, the tiles' median 0.02) kept the group within 4 of its largest radius, so it
-    // made one star: a hub of degree 51 at seed 2, n = 200. The group spreads over 25 median radii and
-    // 11 depths: a tiling (docs/skeleton.md, "Tilings round one large loop").
+    // the tiles round the noise chain into one group of dozens of regions, but one loop round the body
+    // (radius about 0.2, the tiles' median 0.02) kept the group within 4 of its largest radius, so it made
+    // one star: a hub of degree 51 at seed 2, n = 200. Over 15 of its median radius and 10 depths it is a
+    // tiling (in auto mode at seed 2: 56 regions, 25 median radii, 11 depths; docs/skeleton.md, "Tilings
+    // round one large loop").
     const cheburashka = core.openCloud(sampledCloud('cheburashka.ply', 20000, 0.75, 7));
     try {
       expect(cheburashka.neighbourhood().noisy).toBe(true);

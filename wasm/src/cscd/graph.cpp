@@ -27,8 +27,8 @@ bool between(const SeparatorFrame& m, const SeparatorFrame& a, const SeparatorFr
   return along(a) * along(b) < 0 && off(a) <= m.radius && off(b) <= m.radius;
 }
 
-// A group of junction triangles is one branching where its junctions lie within a few radii of its
-// separators of their mean, or around a body whose middle lies deep inside (a ball with arms).
+// A group of junction triangles is one branching where its junctions lie within a few separator radii
+// of their mean, or around a body whose middle lies deep inside (a ball with arms).
 // On a noisy cloud the packed loops go round the noise, their regions tile the surface, and the
 // triangles where three tiles meet chain over the whole shape: one group, whose star's spokes ran from
 // one hub across the shape to every tile. Such a group's junctions spread over many separator radii,

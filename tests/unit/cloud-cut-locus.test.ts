@@ -10,6 +10,7 @@ import { meshAsCloud } from '../../lib/cloud/from-mesh.ts';
 import { random } from '../../lib/core/random.ts';
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
 import { fixture, sharedMesh } from '../paths.ts';
+import { nearestPoints } from './support/clouds.ts';
 
 function readCloud(name: string): ParsedCloud {
   const shape = parseShape(new Uint8Array(readFileSync(fixture('clouds', name))), path.basename(name));
@@ -29,14 +30,6 @@ function torusPoints(count: number, R: number, r: number, seed: number): { posit
     i++;
   }
   return { positions, normals };
-}
-
-/** Index of the point of `positions` (xyz) nearest to `at`. */
-function nearestPoint(positions: ArrayLike<number>, at: number[]): number {
-  let nearest = 0;
-  const distance = (p: number) => Math.hypot(positions[3 * p] - at[0], positions[3 * p + 1] - at[1], positions[3 * p + 2] - at[2]);
-  for (let p = 1; p < positions.length / 3; p++) if (distance(p) < distance(nearest)) nearest = p;
-  return nearest;
 }
 
 /** Neighbour lists of the cloud's graph. */
@@ -204,7 +197,7 @@ describe('the approximate loop on a cloud', () => {
     const points = meshAsCloud(mesh).cloud;
     const cloud = core.openCloud(points);
     try {
-      const source = nearestPoint(points.positions, [0.4577, 0.658, 0.3791]);
+      const [source] = nearestPoints([0.4577, 0.658, 0.3791], points.positions);
       const legBase = [0.2957, 0.6276, 0.5049];
       const stages = cloud.separatorStages(source);
       expect(stages.status).toBe('ok');

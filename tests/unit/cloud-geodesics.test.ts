@@ -9,7 +9,7 @@ import { CoreError, loadCoreNode, type Cloud, type Core } from '../../lib/core/n
 import { parseShape, type ParsedCloud } from '../../lib/io/index.ts';
 import { fixture, sharedData, sharedMesh } from '../paths.ts';
 import { cscd } from './support/cli.ts';
-import { cloudPly, spherePoints } from './support/clouds.ts';
+import { cloudPly, nearestPoints, spherePoints } from './support/clouds.ts';
 import { readMesh } from './support/meshes.ts';
 
 const tmp = mkdtempSync(path.join(tmpdir(), 'cscd-cloud-'));
@@ -19,19 +19,6 @@ function readCloud(file: string): ParsedCloud {
   const shape = parseShape(new Uint8Array(readFileSync(file)), path.basename(file));
   if (shape.kind !== 'cloud') throw new Error(`${file} holds a mesh`);
   return shape;
-}
-
-/** The index of the point of `points` nearest to each point of `queries` (brute force: small sets only). */
-function nearest(queries: ArrayLike<number>, points: ArrayLike<number>): Int32Array {
-  const result = new Int32Array(queries.length / 3);
-  for (let q = 0; q < result.length; q++) {
-    let best = Infinity;
-    for (let p = 0; p < points.length / 3; p++) {
-      const d = (points[3 * p] - queries[3 * q]) ** 2 + (points[3 * p + 1] - queries[3 * q + 1]) ** 2 + (points[3 * p + 2] - queries[3 * q + 2]) ** 2;
-      if (d < best) [best, result[q]] = [d, p];
-    }
-  }
-  return result;
 }
 
 let core: Core;
@@ -79,7 +66,7 @@ describe('geodesic distance on a cloud', () => {
   it('is near the exact geodesic distance on the bob mesh the cloud was sampled from', () => {
     const mesh = readMesh(sharedMesh('bob.ply'));
     const surface = core.openSurface(mesh);
-    const vertexOf = nearest(bob.positions, mesh.positions);
+    const vertexOf = nearestPoints(bob.positions, mesh.positions);
     let sum = 0;
     let count = 0;
     try {

@@ -116,3 +116,16 @@ export function ringScannedTube(rings: number, around: number, gap: number): Flo
     }
   return positions;
 }
+
+/** The index of the point of `points` nearest to each point of `queries` (brute force: small sets only). */
+export function nearestPoints(queries: ArrayLike<number>, points: ArrayLike<number>): Int32Array {
+  const result = new Int32Array(queries.length / 3);
+  for (let q = 0; q < result.length; q++) {
+    let best = Infinity;
+    for (let p = 0; p < points.length / 3; p++) {
+      const d = (points[3 * p] - queries[3 * q]) ** 2 + (points[3 * p + 1] - queries[3 * q + 1]) ** 2 + (points[3 * p + 2] - queries[3 * q + 2]) ** 2;
+      if (d < best) [best, result[q]] = [d, p];
+    }
+  }
+  return result;
+}

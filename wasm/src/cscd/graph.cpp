@@ -41,11 +41,18 @@ bool between(const SeparatorFrame& m, const SeparatorFrame& a, const SeparatorFr
 // of its largest radius but many of its median one: branchings 0.1-10 median radii (the noisy wolf's
 // 9.3 at 10.6 depths), tilings with such a loop 22-25 (cheburashka at 0.75% noise, 35 and 56 regions);
 // docs/skeleton.md, "Tilings round one large loop".
+// On a noisy cloud the tiles may cover a whole blob, and then the places' mean lies deep inside, as a
+// ball's with arms: there a group of many members over many median radii is a tiling at any depth.
+// Of the groups over 15 median radii that only the depth test keeps stars, the noisy blobs' have 15-51
+// members (16-34 median radii, 2.1-7.6 depths), the one branching 7 (the noisy wolf's chest); groups of
+// 12 or more that branch spread over at most 8.4 median radii; docs/skeleton.md, "Tilings of a whole blob".
 constexpr double kMaxSpreadInRadii = 4, kMaxSpreadInMedianRadii = 15, kMaxSpreadInDepths = 10;
+constexpr size_t kMinBlobTiles = 12;
 
-// surface: the shape's elements; the depth of a point is its distance to the nearest.
+// surface: the shape's elements; the depth of a point is its distance to the nearest. noisy: the
+// separators may go round the shape's noise.
 bool tiling(const std::vector<Vector3>& places, const std::set<size_t>& members, const std::vector<SeparatorFrame>& separators,
-            const std::vector<Vector3>& surface) {
+            const std::vector<Vector3>& surface, bool noisy) {
   std::vector<double> radii;
   for (size_t v : members)
     if (v < separators.size()) radii.push_back(separators[v].radius);
@@ -57,8 +64,9 @@ bool tiling(const std::vector<Vector3>& places, const std::set<size_t>& members,
   mean /= double(places.size());
   double spread = 0;
   for (const Vector3& p : places) spread = std::max(spread, norm(p - mean));
-  if (!(largest > 0 && (spread > kMaxSpreadInRadii * largest || (median > 0 && spread > kMaxSpreadInMedianRadii * median))))
-    return false;
+  const bool overMedians = median > 0 && spread > kMaxSpreadInMedianRadii * median;
+  if (!(largest > 0 && (spread > kMaxSpreadInRadii * largest || overMedians))) return false;
+  if (noisy && overMedians && radii.size() >= kMinBlobTiles) return true;
   double depth = INFINITY;
   for (const Vector3& p : surface) depth = std::min(depth, norm(p - mean));
   return spread > kMaxSpreadInDepths * depth;
@@ -187,7 +195,7 @@ size_t SkeletonGraph::components() const {
 
 void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, Vector3>& junctions,
                     const std::vector<SeparatorFrame>& separators, const std::vector<Vector3>& surface,
-                    const std::function<bool(const Vector3&)>& inside) {
+                    const std::function<bool(const Vector3&)>& inside, bool noisy) {
   std::set<std::array<size_t, 2>> edgeSet;
   for (auto e : graph.edges) edgeSet.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
   auto present = [&](const std::array<size_t, 3>& t) {
@@ -255,7 +263,7 @@ void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, 
     for (const auto& e : groupEdges[g]) edgeSet.erase(e);
     // A tiling, or regions round a hole of the shape (no one branching either): its tree and its holes.
     const GroupJoin join = joinGroup(graph, groupEdges[g], groupTriangles[g], inside);
-    if (!join.holes.empty() || tiling(places[g], nodes, separators, surface)) {
+    if (!join.holes.empty() || tiling(places[g], nodes, separators, surface, noisy)) {
       edgeSet.insert(join.tree.begin(), join.tree.end());
       edgeSet.insert(join.holes.begin(), join.holes.end());
       continue;

@@ -37,11 +37,13 @@ struct SeparatorFrame {
 // kept. A junction of three consecutive slices of one tube (`separators[i]`: node i's separator, for the
 // first nodes) is no branching: its edge between the outer two is dropped instead. A group whose
 // junctions are spread over many separator radii, around no deep middle, is a tiling of the surface
-// (`surface`: the shape's elements), not one branching, and so is a group whose triangles go round a hole
-// of the shape (a cycle of the group that its triangles do not fill, whose middle is not `inside`): their
-// members are joined by the shortest tree of their edges, plus an edge closing each such hole.
+// (`surface`: the shape's elements), not one branching, and so, where the separators may go round the
+// noise (`noisy`), is a group of many members spread over many of their radii at any depth (the tiles
+// of a whole blob), and a group whose triangles go round a hole of the shape (a cycle of the group that
+// its triangles do not fill, whose middle is not `inside`): their members are joined by the shortest
+// tree of their edges, plus an edge closing each such hole.
 void cliquesToStars(SkeletonGraph& graph, const std::map<std::array<size_t, 3>, geometrycentral::Vector3>& junctions,
                     const std::vector<SeparatorFrame>& separators, const std::vector<geometrycentral::Vector3>& surface,
-                    const std::function<bool(const geometrycentral::Vector3&)>& inside);
+                    const std::function<bool(const geometrycentral::Vector3&)>& inside, bool noisy);
 
 } // namespace cscd

@@ -19,7 +19,8 @@
 //                                               working copy may have fewer than the shape)
 //   bool inside(const Vector3& p)               whether p lies inside the shape (for closed separators)
 //   bool noisy()                                whether separators may go round the shape's noise (a noisy
-//                                               cloud): a separator then does not make a short leaf a feature
+//                                               cloud): a separator then does not make a short leaf a feature,
+//                                               and many regions round a deep middle may be tiles
 //   void fitRadii(SkeletonGraph& graph)         node radii fitted to the shape around the final skeleton
 
 #include "cscd/bands.h"
@@ -217,7 +218,7 @@ public:
     for (const Candidate* c : packed)
       frames.push_back(c->closed ? SeparatorFrame{loopCentroid(c->loop, true), loopNormal(c->loop), separatorRadius(*c)} : SeparatorFrame{});
     const auto inside = [&](const geometrycentral::Vector3& p) { return realization.inside(p); };
-    cliquesToStars(graph, regions.junctions, frames, realization.samples().positions, inside);
+    cliquesToStars(graph, regions.junctions, frames, realization.samples().positions, inside, realization.noisy());
     realization.centre(graph, packed);
     clock.lap("graph");
 

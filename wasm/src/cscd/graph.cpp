@@ -41,11 +41,9 @@ bool between(const SeparatorFrame& m, const SeparatorFrame& a, const SeparatorFr
 // of its largest radius but many of its median one: branchings 0.1-10 median radii (the noisy wolf's
 // 9.3 at 10.6 depths), tilings with such a loop 22-25 (cheburashka at 0.75% noise, 35 and 56 regions);
 // docs/skeleton.md, "Tilings round one large loop".
-// On a noisy cloud the tiles may cover a whole blob, and then the places' mean lies deep inside, as a
-// ball's with arms: there a group of many members over many median radii is a tiling at any depth.
-// Of the groups over 15 median radii that only the depth test keeps stars, the noisy blobs' have 15-51
-// members (16-34 median radii, 2.1-7.6 depths), the one branching 7 (the noisy wolf's chest); groups of
-// 12 or more that branch spread over at most 8.4 median radii; docs/skeleton.md, "Tilings of a whole blob".
+// Tiles that cover a whole noisy blob have their mean deep inside, as a ball's with arms; they are told
+// apart by their number: 15-51 members against at most 7 in the one branching over 15 median radii (the
+// noisy wolf's chest); docs/skeleton.md, "Tilings of a whole blob".
 constexpr double kMaxSpreadInRadii = 4, kMaxSpreadInMedianRadii = 15, kMaxSpreadInDepths = 10;
 constexpr size_t kMinBlobTiles = 12;
 
